@@ -1,0 +1,50 @@
+// exactccd: exact continuous collision detection for linearly moving primitives.
+//
+// The contract: for finite double or rational inputs every function answers as if computed
+// in exact real arithmetic.
+// - Vertex-face collides iff some t in [0,1] puts p(t) in the closed convex hull of
+//   a(t), b(t), c(t) (a degenerate triangle is a segment or a point).
+// - Edge-edge collides iff some t in [0,1] gives the closed segments a common point
+//   (a zero-length edge is a point).
+// The time of impact (TOI) is the earliest such t, returned as a certified double interval.
+//
+// All functions are thread-safe: they share no mutable state.
+#pragma once
+
+#include <optional>
+
+#include "exactccd/types.hpp"
+
+namespace exactccd {
+
+/// True iff the moving point p(t) lies in the closed moving triangle (a(t), b(t), c(t)) for
+/// some t in [0, 1], decided exactly. Throws std::invalid_argument on a non-finite coordinate.
+bool vertex_face_ccd(const VertexFaceQuery& q, Method method = Method::exact);
+
+/// True iff the moving closed segments (a0(t), a1(t)) and (b0(t), b1(t)) share a point for
+/// some t in [0, 1], decided exactly. Throws std::invalid_argument on a non-finite coordinate.
+bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method = Method::exact);
+
+/// Exact vertex-face CCD for rational coordinates.
+bool vertex_face_ccd(const RationalVertexFaceQuery& q);
+
+/// Exact edge-edge CCD for rational coordinates.
+bool edge_edge_ccd(const RationalEdgeEdgeQuery& q);
+
+/// Earliest time of impact of a vertex-face query: the smallest t in [0, 1] at which p(t) is
+/// in the closed triangle, enclosed in the tightest double interval [lo, hi] (lo == hi when
+/// that time is a double, hi == nextafter(lo) otherwise), or std::nullopt when the primitives
+/// never touch. Throws std::invalid_argument on a non-finite coordinate.
+std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q,
+                                            Method method = Method::exact);
+
+/// Earliest time of impact of an edge-edge query; see vertex_face_toi.
+std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method = Method::exact);
+
+/// Earliest time of impact of a vertex-face query with rational coordinates.
+std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q);
+
+/// Earliest time of impact of an edge-edge query with rational coordinates.
+std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q);
+
+}  // namespace exactccd

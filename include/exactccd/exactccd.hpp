@@ -1,0 +1,5 @@
+// exactccd: umbrella header. Include this to get the whole public API.
+#pragma once
+
+#include "exactccd/ccd.hpp"    // IWYU pragma: export
+#include "exactccd/types.hpp"  // IWYU pragma: export

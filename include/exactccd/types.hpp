@@ -1,0 +1,77 @@
+// exactccd: value types of the public API.
+//
+// A query is eight points: the positions of four vertices at t = 0 and at t = 1, in the
+// row order of the public CCD benchmark (Wang et al. 2021). Vertices move linearly,
+// x(t) = x_t0 + t (x_t1 - x_t0), t in [0, 1].
+#pragma once
+
+#include <array>
+#include <gmpxx.h>
+
+namespace exactccd {
+
+/// A point or vector with three coordinates of number type T (double or mpq_class).
+template <class T>
+struct Vec3T {
+  T x, y, z;
+};
+
+using Vec3 = Vec3T<double>;             ///< double coordinates
+using RationalVec3 = Vec3T<mpq_class>;  ///< exact rational coordinates (GMP)
+
+/// Vertex-face query: point p against triangle (a, b, c), each at t = 0 and t = 1.
+/// Member order is the benchmark row order: p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1.
+template <class T>
+struct VertexFaceQueryT {
+  Vec3T<T> p_t0, a_t0, b_t0, c_t0;
+  Vec3T<T> p_t1, a_t1, b_t1, c_t1;
+};
+
+/// Edge-edge query: segment (a0, a1) against segment (b0, b1), each at t = 0 and t = 1.
+/// Member order is the benchmark row order: a0_t0, a1_t0, b0_t0, b1_t0, a0_t1, a1_t1, b0_t1,
+/// b1_t1.
+template <class T>
+struct EdgeEdgeQueryT {
+  Vec3T<T> a0_t0, a1_t0, b0_t0, b1_t0;
+  Vec3T<T> a0_t1, a1_t1, b0_t1, b1_t1;
+};
+
+using VertexFaceQuery = VertexFaceQueryT<double>;
+using EdgeEdgeQuery = EdgeEdgeQueryT<double>;
+using RationalVertexFaceQuery = VertexFaceQueryT<mpq_class>;
+using RationalEdgeEdgeQuery = EdgeEdgeQueryT<mpq_class>;
+
+/// The eight points of a query in benchmark row order (the four vertices at t0, then at t1).
+template <class T>
+std::array<Vec3T<T>, 8> rows(const VertexFaceQueryT<T>& q) {
+  return {q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1};
+}
+template <class T>
+std::array<Vec3T<T>, 8> rows(const EdgeEdgeQueryT<T>& q) {
+  return {q.a0_t0, q.a1_t0, q.b0_t0, q.b1_t0, q.a0_t1, q.a1_t1, q.b0_t1, q.b1_t1};
+}
+
+/// Builds a query from its eight points in benchmark row order.
+template <class Query, class T>
+Query from_rows(const std::array<Vec3T<T>, 8>& r) {
+  return Query{r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]};
+}
+
+/// A certified enclosure [lo, hi] of an exact time in [0, 1]: lo <= t <= hi. The library
+/// returns the tightest such pair of doubles: lo == hi when t is itself a double, otherwise
+/// hi is the double right after lo.
+struct TimeInterval {
+  double lo = 0.0;
+  double hi = 0.0;
+};
+
+inline bool operator==(const TimeInterval& a, const TimeInterval& b) {
+  return a.lo == b.lo && a.hi == b.hi;
+}
+
+/// How a query is answered. Every method but `naive` returns the exact answer.
+enum class Method {
+  exact,  ///< exact rational arithmetic and CGAL's algebraic kernel throughout (slow)
+};
+
+}  // namespace exactccd

@@ -1,0 +1,143 @@
+// Exact CCD on CGAL's univariate algebraic kernel. The decision procedure (docs/design.md):
+//
+// The set of contact times S = {t in [0,1] : in_contact(t)} is closed (it is the projection
+// of a compact set), and in_contact(t) depends only on the signs at t of finitely many
+// polynomials. Between consecutive roots of those polynomials every sign is constant, so
+// in_contact is constant there; if it holds on an open cell it holds at the cell's left end
+// by closedness. Hence S is empty iff in_contact fails at every "candidate": 0, 1 and every
+// root in [0,1] of every polynomial that is not identically zero, and min S is the first
+// candidate, in increasing order, where it holds. When the volume V is not identically zero
+// contact needs V(t) = 0, so the candidates shrink to the roots of V in [0,1].
+#include "exact/exact_ccd.hpp"
+
+#include <CGAL/Algebraic_kernel_d_1.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Gmpz.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "contact/contact_rule.hpp"
+
+namespace exactccd::exact {
+namespace {
+
+using AlgebraicKernel = CGAL::Algebraic_kernel_d_1<CGAL::Gmpz>;
+using IntegerPoly = AlgebraicKernel::Polynomial_1;
+using Root = AlgebraicKernel::Algebraic_real_1;
+using Bound = AlgebraicKernel::Bound;
+
+/// The polynomial times the least common multiple of its coefficients' denominators: integer
+/// coefficients, the same roots and, the factor being positive, the same signs.
+template <int D>
+IntegerPoly integer_poly(const contact::Poly<mpq_class, D>& p) {
+  mpz_class common = 1;
+  for (const mpq_class& x : p.c) mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), x.get_den_mpz_t());
+  std::vector<CGAL::Gmpz> coefficients;
+  coefficients.reserve(D + 1);
+  for (const mpq_class& x : p.c) {
+    const mpz_class z = x.get_num() * (common / x.get_den());
+    coefficients.emplace_back(z.get_mpz_t());
+  }
+  return IntegerPoly(coefficients.begin(), coefficients.end());
+}
+
+Root rational_root(const mpq_class& x) { return Root(Bound(x.get_mpq_t())); }
+
+/// Appends the real roots of a polynomial that is not identically zero lying in [0, 1].
+void append_roots_in_unit_interval(const AlgebraicKernel& kernel, const IntegerPoly& p,
+                                   std::vector<Root>& out) {
+  if (CGAL::degree(p) == 0) return;  // a nonzero constant has no root
+  kernel.solve_1_object()(p, false, Bound(0), Bound(1), std::back_inserter(out));
+}
+
+/// Candidate times of docs/design.md, sorted increasingly and without repetition.
+template <class Polys>
+std::vector<Root> candidate_times(const AlgebraicKernel& kernel, const Polys& P) {
+  std::vector<Root> times;
+  if (!contact::is_zero(P.volume)) {
+    append_roots_in_unit_interval(kernel, integer_poly(P.volume), times);
+    return times;  // solve_1 returns them sorted and distinct
+  }
+  times.push_back(rational_root(0));
+  times.push_back(rational_root(1));
+  contact::for_each_in_plane_poly(P, [&](const auto& p) {
+    if (!contact::is_zero(p)) append_roots_in_unit_interval(kernel, integer_poly(p), times);
+  });
+  const auto compare = kernel.compare_1_object();
+  std::sort(times.begin(), times.end(),
+            [&](const Root& a, const Root& b) { return compare(a, b) == CGAL::SMALLER; });
+  times.erase(std::unique(times.begin(), times.end(),
+                          [&](const Root& a, const Root& b) { return compare(a, b) == CGAL::EQUAL; }),
+              times.end());
+  return times;
+}
+
+/// The earliest time in [0, 1] at which the contact rule holds, exactly.
+template <class Polys>
+std::optional<Root> earliest_contact(const Polys& P) {
+  const AlgebraicKernel kernel;
+  const auto sign_at = kernel.sign_at_1_object();
+  for (const Root& t : candidate_times(kernel, P)) {
+    const auto sign = [&](const auto& p) -> int {
+      if (contact::is_zero(p)) return 0;
+      return static_cast<int>(sign_at(integer_poly(p), t));
+    };
+    if (contact::in_contact(P, sign)) return t;
+  }
+  return std::nullopt;
+}
+
+/// The tightest double interval holding the algebraic number t in [0, 1]: [d, d] when t is the
+/// double d, otherwise two consecutive doubles.
+TimeInterval enclose(const AlgebraicKernel& kernel, const Root& t) {
+  // Relative precision 2^-64 is finer than half an ulp (2^-53 relative), so after outward
+  // rounding at most one double lies strictly between lo and hi.
+  const auto [lower, upper] = kernel.approximate_relative_1_object()(t, 64);
+  double lo = CGAL::to_interval(lower).first;
+  double hi = CGAL::to_interval(upper).second;
+  const auto compare = kernel.compare_1_object();
+  const auto compare_to = [&](double d) { return compare(t, Root(Bound(d))); };
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  while (std::nextafter(lo, inf) < hi) {  // step over the (at most two) doubles inside
+    const double mid = std::nextafter(lo, inf);
+    const CGAL::Comparison_result c = compare_to(mid);
+    if (c == CGAL::EQUAL) return {mid, mid};
+    if (c == CGAL::SMALLER)
+      hi = mid;
+    else
+      lo = mid;
+  }
+  if (compare_to(lo) == CGAL::EQUAL) return {lo, lo};
+  if (compare_to(hi) == CGAL::EQUAL) return {hi, hi};
+  return {lo, hi};
+}
+
+template <class Polys>
+std::optional<TimeInterval> toi(const Polys& P) {
+  const std::optional<Root> t = earliest_contact(P);
+  if (!t) return std::nullopt;
+  return enclose(AlgebraicKernel(), *t);
+}
+
+}  // namespace
+
+bool vertex_face_ccd(const RationalVertexFaceQuery& q) {
+  return earliest_contact(contact::vertex_face_polys(q)).has_value();
+}
+
+bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) {
+  return earliest_contact(contact::edge_edge_polys(q)).has_value();
+}
+
+std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
+  return toi(contact::vertex_face_polys(q));
+}
+
+std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) {
+  return toi(contact::edge_edge_polys(q));
+}
+
+}  // namespace exactccd::exact
