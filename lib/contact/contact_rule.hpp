@@ -24,15 +24,14 @@ bool is_nonzero(const PolyVec3<NT, 2>& v, SignOracle&& sign) {
   return sign(v.x) != 0 || sign(v.y) != 0 || sign(v.z) != 0;
 }
 
-/// Vertex-face contact at one time: p is in the closed hull of the triangle.
-/// - Not coplanar (V != 0): no contact.
-/// - Proper triangle (n != 0): p, being in the plane, is inside iff its three barycentric
-///   numerators n . (e_i x (p - v_i)) = |n|^2 lambda_i are all >= 0.
-/// - Degenerate triangle (n == 0: a, b, c collinear or coincident): the hull is the union of
+/// Vertex-face contact at a time where the volume V vanishes (p is in the triangle's plane,
+/// or the triangle is degenerate):
+/// - proper triangle (n != 0): p is inside iff its three barycentric numerators
+///   n . (e_i x (p - v_i)) = |n|^2 lambda_i are all >= 0;
+/// - degenerate triangle (n == 0: a, b, c collinear or coincident): the hull is the union of
 ///   the three closed segments ab, bc, ca.
 template <class NT, class SignOracle>
-bool vertex_face_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
-  if (sign(P.volume) != 0) return false;
+bool vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
   if (is_nonzero(P.normal, sign))
     return sign(P.barycentric[0]) >= 0 && sign(P.barycentric[1]) >= 0 &&
            sign(P.barycentric[2]) >= 0;
@@ -40,15 +39,13 @@ bool vertex_face_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
          point_on_segment(P.on_edge[2], sign);
 }
 
-/// Edge-edge contact at one time: the closed segments share a point.
-/// - Not coplanar (V != 0): no contact.
-/// - Coplanar, not parallel (w = da x db != 0): the lines meet at one point with parameters
-///   alpha = U / D, beta = W / D; contact iff both lie in [0, 1].
-/// - Parallel, collinear or zero-length (w == 0): the segments meet iff an endpoint of one lies
+/// Edge-edge contact at a time where the volume V vanishes (the edges are coplanar):
+/// - not parallel (w = da x db != 0): the lines meet at one point with parameters
+///   alpha = U / D, beta = W / D; contact iff both lie in [0, 1];
+/// - parallel, collinear or zero-length (w == 0): the segments meet iff an endpoint of one lies
 ///   on the other (the intersection of two collinear segments is bounded by such endpoints).
 template <class NT, class SignOracle>
-bool edge_edge_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
-  if (sign(P.volume) != 0) return false;
+bool edge_edge_in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
   if (is_nonzero(P.direction_cross, sign))
     return sign(P.parameters[0]) >= 0 && sign(P.parameters[1]) >= 0 &&
            sign(P.parameters[2]) >= 0 && sign(P.parameters[3]) >= 0;
@@ -58,14 +55,21 @@ bool edge_edge_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
          point_on_segment(P.endpoint_on_edge[3], sign);
 }
 
-/// The contact rule of a query's polynomials, chosen by overload.
+/// The in-plane part of the contact rule, chosen by overload.
 template <class NT, class SignOracle>
-bool in_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
-  return vertex_face_contact(P, sign);
+bool in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
+  return vertex_face_in_plane_contact(P, sign);
 }
 template <class NT, class SignOracle>
-bool in_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
-  return edge_edge_contact(P, sign);
+bool in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
+  return edge_edge_in_plane_contact(P, sign);
+}
+
+/// The whole contact rule at one time: the volume vanishes (the four points are coplanar)
+/// and the in-plane rule holds.
+template <class Polys, class SignOracle>
+bool in_contact(const Polys& P, SignOracle&& sign) {
+  return sign(P.volume) == 0 && in_plane_contact(P, sign);
 }
 
 }  // namespace exactccd::contact

@@ -17,7 +17,15 @@ template <class NT, int D>
 struct Poly {
   static_assert(D >= 0, "degree must be non-negative");
   static constexpr int degree = D;
-  std::array<NT, D + 1> c{};
+  std::array<NT, D + 1> c;
+
+  /// The zero polynomial. (Some number types, e.g. CGAL::Interval_nt, do not zero
+  /// themselves on default construction, so every operator starts from this.)
+  static Poly zero() {
+    Poly p;
+    p.c.fill(NT(0));
+    return p;
+  }
 
   /// The polynomial's value at t (Horner's scheme).
   template <class T>
@@ -42,7 +50,7 @@ bool is_zero(const Poly<NT, D>& p) {
 
 template <class NT, int A, int B>
 Poly<NT, (A > B ? A : B)> operator+(const Poly<NT, A>& p, const Poly<NT, B>& q) {
-  Poly<NT, (A > B ? A : B)> r;
+  auto r = Poly<NT, (A > B ? A : B)>::zero();
   for (int k = 0; k <= A; ++k) r.c[k] = p.c[k];
   for (int k = 0; k <= B; ++k) r.c[k] = r.c[k] + q.c[k];
   return r;
@@ -50,7 +58,7 @@ Poly<NT, (A > B ? A : B)> operator+(const Poly<NT, A>& p, const Poly<NT, B>& q) 
 
 template <class NT, int A, int B>
 Poly<NT, (A > B ? A : B)> operator-(const Poly<NT, A>& p, const Poly<NT, B>& q) {
-  Poly<NT, (A > B ? A : B)> r;
+  auto r = Poly<NT, (A > B ? A : B)>::zero();
   for (int k = 0; k <= A; ++k) r.c[k] = p.c[k];
   for (int k = 0; k <= B; ++k) r.c[k] = r.c[k] - q.c[k];
   return r;
@@ -58,7 +66,7 @@ Poly<NT, (A > B ? A : B)> operator-(const Poly<NT, A>& p, const Poly<NT, B>& q) 
 
 template <class NT, int A, int B>
 Poly<NT, A + B> operator*(const Poly<NT, A>& p, const Poly<NT, B>& q) {
-  Poly<NT, A + B> r;  // value-initialised: all zero
+  auto r = Poly<NT, A + B>::zero();
   for (int i = 0; i <= A; ++i)
     for (int j = 0; j <= B; ++j) r.c[i + j] = r.c[i + j] + p.c[i] * q.c[j];
   return r;
