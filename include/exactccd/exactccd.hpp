@@ -2,4 +2,5 @@
 #pragma once
 
 #include "exactccd/ccd.hpp"    // IWYU pragma: export
+#include "exactccd/stats.hpp"  // IWYU pragma: export
 #include "exactccd/types.hpp"  // IWYU pragma: export

@@ -71,7 +71,10 @@ inline bool operator==(const TimeInterval& a, const TimeInterval& b) {
 
 /// How a query is answered. Every method but `naive` returns the exact answer.
 enum class Method {
-  exact,  ///< exact rational arithmetic and CGAL's algebraic kernel throughout (slow)
+  filtered,  ///< certified floating-point filters, exact fallback (exact; the default)
+  exact,     ///< exact rational arithmetic and CGAL's algebraic kernel throughout (slow)
+  naive,     ///< textbook double-precision cubic, NOT robust: a baseline, wrong near
+             ///< degeneracies; its "TOI" is an uncertified double [t, t]
 };
 
 }  // namespace exactccd

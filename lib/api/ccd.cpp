@@ -5,13 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "baseline/naive_ccd.hpp"
 #include "exact/exact_ccd.hpp"
+#include "exact/rational_query.hpp"
+#include "filter/filtered_ccd.hpp"
 
 namespace exactccd {
 namespace {
-
-/// Every double is a dyadic rational; mpq_class holds it exactly.
-RationalVec3 to_rational(const Vec3& v) { return {mpq_class(v.x), mpq_class(v.y), mpq_class(v.z)}; }
 
 template <class Query>
 void require_finite(const Query& q, const char* function) {
@@ -21,60 +21,85 @@ void require_finite(const Query& q, const char* function) {
                                   ": non-finite coordinate (NaN or infinity) in the query");
 }
 
-template <class RationalQuery, class Query>
-RationalQuery to_rational(const Query& q) {
-  std::array<RationalVec3, 8> r;
-  const auto d = rows(q);
-  for (std::size_t i = 0; i < d.size(); ++i) r[i] = to_rational(d[i]);
-  return from_rows<RationalQuery>(r);
+std::optional<TimeInterval> point_interval(std::optional<double> t) {
+  if (!t) return std::nullopt;
+  return TimeInterval{*t, *t};
+}
+
+std::optional<TimeInterval> toi(const VertexFaceQuery& q, Method method, bool want_toi,
+                                StageCounters* counters) {
+  require_finite(q, want_toi ? "vertex_face_toi" : "vertex_face_ccd");
+  switch (method) {
+    case Method::naive:
+      return point_interval(baseline::naive_vertex_face_toi(q));
+    case Method::exact:
+      if (!want_toi)
+        return exact::vertex_face_ccd(exact::to_rational(q)) ? std::optional(TimeInterval{})
+                                                             : std::nullopt;
+      return exact::vertex_face_toi(exact::to_rational(q));
+    case Method::filtered:
+      break;
+  }
+  return want_toi ? filter::vertex_face_toi(q, counters)
+                  : (filter::vertex_face_ccd(q, counters) ? std::optional(TimeInterval{})
+                                                          : std::nullopt);
+}
+
+std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, bool want_toi,
+                                StageCounters* counters) {
+  require_finite(q, want_toi ? "edge_edge_toi" : "edge_edge_ccd");
+  switch (method) {
+    case Method::naive:
+      return point_interval(baseline::naive_edge_edge_toi(q));
+    case Method::exact:
+      if (!want_toi)
+        return exact::edge_edge_ccd(exact::to_rational(q)) ? std::optional(TimeInterval{})
+                                                           : std::nullopt;
+      return exact::edge_edge_toi(exact::to_rational(q));
+    case Method::filtered:
+      break;
+  }
+  return want_toi ? filter::edge_edge_toi(q, counters)
+                  : (filter::edge_edge_ccd(q, counters) ? std::optional(TimeInterval{})
+                                                        : std::nullopt);
 }
 
 }  // namespace
 
 bool vertex_face_ccd(const VertexFaceQuery& q, Method method) {
-  require_finite(q, "vertex_face_ccd");
-  switch (method) {
-    case Method::exact:
-      break;
-  }
-  return exact::vertex_face_ccd(to_rational<RationalVertexFaceQuery>(q));
+  return toi(q, method, false, nullptr).has_value();
 }
-
+bool vertex_face_ccd(const VertexFaceQuery& q, Method method, StageCounters& counters) {
+  return toi(q, method, false, &counters).has_value();
+}
 bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method) {
-  require_finite(q, "edge_edge_ccd");
-  switch (method) {
-    case Method::exact:
-      break;
-  }
-  return exact::edge_edge_ccd(to_rational<RationalEdgeEdgeQuery>(q));
+  return toi(q, method, false, nullptr).has_value();
+}
+bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method, StageCounters& counters) {
+  return toi(q, method, false, &counters).has_value();
 }
 
 bool vertex_face_ccd(const RationalVertexFaceQuery& q) { return exact::vertex_face_ccd(q); }
-
 bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) { return exact::edge_edge_ccd(q); }
 
 std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, Method method) {
-  require_finite(q, "vertex_face_toi");
-  switch (method) {
-    case Method::exact:
-      break;
-  }
-  return exact::vertex_face_toi(to_rational<RationalVertexFaceQuery>(q));
+  return toi(q, method, true, nullptr);
 }
-
+std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, Method method,
+                                            StageCounters& counters) {
+  return toi(q, method, true, &counters);
+}
 std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method) {
-  require_finite(q, "edge_edge_toi");
-  switch (method) {
-    case Method::exact:
-      break;
-  }
-  return exact::edge_edge_toi(to_rational<RationalEdgeEdgeQuery>(q));
+  return toi(q, method, true, nullptr);
+}
+std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method,
+                                          StageCounters& counters) {
+  return toi(q, method, true, &counters);
 }
 
 std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
   return exact::vertex_face_toi(q);
 }
-
 std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) {
   return exact::edge_edge_toi(q);
 }

@@ -57,6 +57,26 @@ PointOnSegmentPolys<NT> point_on_segment_polys(const PolyVec3<NT, 1>& q, const P
   return {cross(q - u, v - u), dot(q - u, v - q)};
 }
 
+/// The vertex-face volume V(t) = (b - a) . ((c - a) x (p - a)) alone (the cheap first test).
+template <class NT>
+Poly<NT, 3> vertex_face_volume(const VertexFaceQueryT<NT>& q) {
+  const auto p = point_motion(q.p_t0, q.p_t1);
+  const auto a = point_motion(q.a_t0, q.a_t1);
+  const auto b = point_motion(q.b_t0, q.b_t1);
+  const auto c = point_motion(q.c_t0, q.c_t1);
+  return dot(b - a, cross(c - a, p - a));
+}
+
+/// The edge-edge volume V(t) = (a1 - a0) . ((b0 - a0) x (b1 - a0)) alone.
+template <class NT>
+Poly<NT, 3> edge_edge_volume(const EdgeEdgeQueryT<NT>& q) {
+  const auto a0 = point_motion(q.a0_t0, q.a0_t1);
+  const auto a1 = point_motion(q.a1_t0, q.a1_t1);
+  const auto b0 = point_motion(q.b0_t0, q.b0_t1);
+  const auto b1 = point_motion(q.b1_t0, q.b1_t1);
+  return dot(a1 - a0, cross(b0 - a0, b1 - a0));
+}
+
 /// Builds the vertex-face polynomials of a query whose coordinates are of type NT.
 template <class NT>
 VertexFacePolys<NT> vertex_face_polys(const VertexFaceQueryT<NT>& q) {
@@ -66,7 +86,7 @@ VertexFacePolys<NT> vertex_face_polys(const VertexFaceQueryT<NT>& q) {
   const auto c = point_motion(q.c_t0, q.c_t1);
   VertexFacePolys<NT> r;
   r.normal = cross(b - a, c - a);
-  r.volume = dot(b - a, cross(c - a, p - a));
+  r.volume = vertex_face_volume(q);
   r.barycentric = {dot(r.normal, cross(b - a, p - a)), dot(r.normal, cross(c - b, p - b)),
                    dot(r.normal, cross(a - c, p - c))};
   r.on_edge = {point_on_segment_polys(p, a, b), point_on_segment_polys(p, b, c),
@@ -85,7 +105,7 @@ EdgeEdgePolys<NT> edge_edge_polys(const EdgeEdgeQueryT<NT>& q) {
   const auto db = b1 - b0;
   const auto r = b0 - a0;
   EdgeEdgePolys<NT> e;
-  e.volume = dot(da, cross(r, b1 - a0));
+  e.volume = edge_edge_volume(q);
   e.direction_cross = cross(da, db);
   const auto d = dot(e.direction_cross, e.direction_cross);
   const auto u = dot(cross(r, db), e.direction_cross);

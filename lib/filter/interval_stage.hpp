@@ -1,0 +1,29 @@
+// Stage 2 of the filtered method: interval arithmetic (CGAL::Interval_nt) on the polynomials
+// of the contact rule. Isolates the roots of the volume V in [0, 1] by Bernstein subdivision
+// and evaluates the in-plane rule over each isolating interval; decides whenever every sign
+// it needs is certain, and otherwise says "uncertain" so that a later stage decides.
+#pragma once
+
+#include <optional>
+
+#include "exactccd/types.hpp"
+
+namespace exactccd::filter {
+
+/// What a filter stage concluded about a query.
+enum class Verdict { no_collision, collision, uncertain };
+
+/// A stage's conclusion and, for a collision, the earliest time of impact when the stage could
+/// certify it (tightest double interval, as the public API promises).
+struct StageResult {
+  Verdict verdict = Verdict::uncertain;
+  std::optional<TimeInterval> toi;
+};
+
+/// Stage 2 for vertex-face. With want_toi, a collision's TOI is certified or left empty.
+StageResult vertex_face_interval_stage(const VertexFaceQuery& q, bool want_toi);
+
+/// Stage 2 for edge-edge. With want_toi, a collision's TOI is certified or left empty.
+StageResult edge_edge_interval_stage(const EdgeEdgeQuery& q, bool want_toi);
+
+}  // namespace exactccd::filter
