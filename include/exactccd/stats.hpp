@@ -10,17 +10,19 @@ namespace exactccd {
 struct StageCounters {
   std::uint64_t volume_exclusion = 0;  ///< static filter: V(t) != 0 on [0, 1], no collision
   std::uint64_t interval = 0;          ///< interval arithmetic on the contact polynomials
-  std::uint64_t exact = 0;             ///< exact fallback (GMP, CGAL algebraic kernel)
-  std::uint64_t exact_toi = 0;         ///< answer from a filter, TOI enclosed by the exact path
+  std::uint64_t integer = 0;           ///< exact integer arithmetic, small degree-4 kernel
+  std::uint64_t exact = 0;             ///< exact fallback (GMP rationals, CGAL algebraic kernel)
+  std::uint64_t toi_refined = 0;  ///< answer from the interval stage, TOI from a later stage
 
   /// Total number of queries counted.
-  std::uint64_t total() const { return volume_exclusion + interval + exact; }
+  std::uint64_t total() const { return volume_exclusion + interval + integer + exact; }
 
   StageCounters& operator+=(const StageCounters& o) {
     volume_exclusion += o.volume_exclusion;
     interval += o.interval;
+    integer += o.integer;
     exact += o.exact;
-    exact_toi += o.exact_toi;
+    toi_refined += o.toi_refined;
     return *this;
   }
 };

@@ -2,6 +2,7 @@
 
 #include "exact/exact_ccd.hpp"
 #include "exact/rational_query.hpp"
+#include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/volume_exclusion.hpp"
 
@@ -12,35 +13,46 @@ void count(StageCounters* counters, std::uint64_t StageCounters::*stage) {
   if (counters) ++(counters->*stage);
 }
 
+/// A collision without a TOI, for callers that only ask whether the primitives collide.
+const std::optional<TimeInterval> kCollides = TimeInterval{};
+
+std::optional<TimeInterval> answer(const StageResult& r) {
+  return r.verdict == Verdict::collision ? (r.toi ? r.toi : kCollides) : std::nullopt;
+}
+
 /// One query through the stages. Kind bundles the per-primitive functions. Without want_toi a
-/// collision is returned as an empty interval [0, 0] (only its presence matters).
+/// collision is returned as the placeholder interval [0, 0] (only its presence matters).
 template <class Kind, class Query>
 std::optional<TimeInterval> filtered_toi(const Query& q, bool want_toi, StageCounters* counters) {
   if (Kind::volume_excluded(q)) {
     count(counters, &StageCounters::volume_exclusion);
     return std::nullopt;
   }
-  const StageResult r = Kind::interval_stage(q, want_toi);
-  if (r.verdict == Verdict::no_collision) {
+  const StageResult interval = Kind::interval_stage(q, want_toi);
+  if (interval.verdict != Verdict::uncertain) {
     count(counters, &StageCounters::interval);
-    return std::nullopt;
+    if (interval.verdict == Verdict::no_collision || !want_toi || interval.toi)
+      return answer(interval);
+    count(counters, &StageCounters::toi_refined);  // collision certain, TOI not yet
   }
-  if (r.verdict == Verdict::collision) {
-    count(counters, &StageCounters::interval);
-    if (!want_toi) return TimeInterval{};  // the caller only asks whether they collide
-    if (r.toi) return r.toi;
-    count(counters, &StageCounters::exact_toi);
-    return Kind::exact_toi(exact::to_rational(q));
+  const StageResult integer = Kind::integer_stage(q, want_toi);
+  if (integer.verdict != Verdict::uncertain) {
+    if (interval.verdict == Verdict::uncertain) count(counters, &StageCounters::integer);
+    return answer(integer);
   }
-  count(counters, &StageCounters::exact);
-  if (!want_toi) return Kind::exact_ccd(exact::to_rational(q)) ? std::optional(TimeInterval{}) : std::nullopt;
-  return Kind::exact_toi(exact::to_rational(q));
+  if (interval.verdict == Verdict::uncertain) count(counters, &StageCounters::exact);
+  const auto rational = exact::to_rational(q);
+  if (!want_toi) return Kind::exact_ccd(rational) ? kCollides : std::nullopt;
+  return Kind::exact_toi(rational);
 }
 
 struct VertexFace {
   static bool volume_excluded(const VertexFaceQuery& q) { return vertex_face_volume_excluded(q); }
   static StageResult interval_stage(const VertexFaceQuery& q, bool want_toi) {
     return vertex_face_interval_stage(q, want_toi);
+  }
+  static StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) {
+    return vertex_face_integer_stage(q, want_toi);
   }
   static bool exact_ccd(const RationalVertexFaceQuery& q) { return exact::vertex_face_ccd(q); }
   static std::optional<TimeInterval> exact_toi(const RationalVertexFaceQuery& q) {
@@ -52,6 +64,9 @@ struct EdgeEdge {
   static bool volume_excluded(const EdgeEdgeQuery& q) { return edge_edge_volume_excluded(q); }
   static StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi) {
     return edge_edge_interval_stage(q, want_toi);
+  }
+  static StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) {
+    return edge_edge_integer_stage(q, want_toi);
   }
   static bool exact_ccd(const RationalEdgeEdgeQuery& q) { return exact::edge_edge_ccd(q); }
   static std::optional<TimeInterval> exact_toi(const RationalEdgeEdgeQuery& q) {

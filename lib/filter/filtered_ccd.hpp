@@ -1,7 +1,8 @@
 // The filtered method: stages from cheapest to exact, each deciding what it can certify.
 //   1. volume exclusion (static error bound, doubles): V(t) != 0 on [0, 1] => no collision;
 //   2. interval stage (CGAL::Interval_nt): root isolation and in-plane signs;
-//   3. exact path (GMP, CGAL's algebraic kernel): always decides.
+//   3. integer stage (GMP integers, small exact kernel for degree <= 4);
+//   4. CGAL path (GMP rationals, CGAL's Algebraic_kernel_d_1): always decides.
 // The answer is always the exact one; only the time taken depends on the stage.
 #pragma once
 

@@ -1,0 +1,243 @@
+#include "exact/integer_poly.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace exactccd::exact {
+namespace {
+
+int sgn(const mpz_class& x) { return mpz_sgn(x.get_mpz_t()); }
+
+/// x * 2^e for e >= 0.
+mpz_class shifted(const mpz_class& x, unsigned long e) {
+  mpz_class r;
+  mpz_mul_2exp(r.get_mpz_t(), x.get_mpz_t(), e);
+  return r;
+}
+
+constexpr int kBinomial[5][5] = {
+    {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
+
+/// Pseudo-remainder of a by b, up to a nonzero constant factor.
+IntegerPoly pseudo_remainder(IntegerPoly a, const IntegerPoly& b) {
+  while (!a.is_zero() && a.deg >= b.deg) {
+    const int shift = a.deg - b.deg;
+    const mpz_class lead_a = a.leading();
+    for (int i = 0; i <= a.deg; ++i) a.c[i] *= b.leading();
+    for (int i = 0; i <= b.deg; ++i) a.c[i + shift] -= lead_a * b.c[i];
+    a.normalize();
+  }
+  return a;
+}
+
+/// Exact quotient p / g over the integers (g divides p, g primitive, p primitive).
+IntegerPoly exact_quotient(IntegerPoly p, const IntegerPoly& g) {
+  IntegerPoly q;
+  q.deg = p.deg - g.deg;
+  for (int j = q.deg; j >= 0; --j) {
+    q.c[j] = p.c[j + g.deg];
+    mpz_divexact(q.c[j].get_mpz_t(), q.c[j].get_mpz_t(), g.leading().get_mpz_t());
+    for (int i = 0; i <= g.deg; ++i) p.c[i + j] -= q.c[j] * g.c[i];
+  }
+  q.normalize();
+  return q;
+}
+
+using Coefficients = std::array<mpz_class, 5>;
+
+int sign_variations(const Coefficients& b, int d) {
+  int changes = 0, last = 0;
+  for (int j = 0; j <= d; ++j) {
+    const int s = sgn(b[j]);
+    if (s == 0) continue;
+    if (last != 0 && s != last) ++changes;
+    last = s;
+  }
+  return changes;
+}
+
+/// Bernstein coefficients on [0, 1] of c[0..d] (monomial basis), times 12 (12 / C(d, i) is an
+/// integer for d <= 4): b_j = sum_{i <= j} C(j, i) / C(d, i) c_i.
+Coefficients bernstein_coefficients(const Coefficients& c, int d) {
+  Coefficients b;
+  for (int j = 0; j <= d; ++j) {
+    b[j] = 0;
+    for (int i = 0; i <= j; ++i) b[j] += (kBinomial[j][i] * (12 / kBinomial[d][i])) * c[i];
+  }
+  return b;
+}
+
+// Roots of a square-free integer polynomial of degree <= 4 are separated by a positive amount,
+// so the subdivision terminates; this cap only guards against a logic error.
+constexpr unsigned kMaxDepth = 4096;
+
+/// Bernstein subdivision of the cell [a / 2^k, (a + 1) / 2^k] with scaled Bernstein
+/// coefficients b (all positive multiples of the true ones).
+void isolate(const IntegerPoly& p, const Coefficients& b, const mpz_class& a, unsigned k,
+             std::vector<IsolatedRoot>& out) {
+  const int d = p.deg;
+  const int changes = sign_variations(b, d);
+  if (changes == 0) return;
+  if (changes == 1 && sgn(b[0]) != 0 && sgn(b[d]) != 0) {
+    IsolatedRoot r;
+    r.lo = {a, k};
+    r.hi = {a + 1, k};
+    r.sign_at_lo = sgn(b[0]);
+    out.push_back(std::move(r));
+    return;
+  }
+  if (k >= kMaxDepth) throw std::runtime_error("exactccd: root isolation did not terminate");
+  // de Casteljau at the midpoint, both halves scaled by 2^d to stay integral:
+  //   left_j = 2^(d-j) sum_{i<=j} C(j,i) b_i,  right_j = 2^j sum_{i>=j} C(d-j,i-j) b_i.
+  Coefficients left, right;
+  for (int j = 0; j <= d; ++j) {
+    mpz_class l = 0, r = 0;
+    for (int i = 0; i <= j; ++i) l += kBinomial[j][i] * b[i];
+    for (int i = j; i <= d; ++i) r += kBinomial[d - j][i - j] * b[i];
+    left[j] = shifted(l, static_cast<unsigned long>(d - j));
+    right[j] = shifted(r, static_cast<unsigned long>(j));
+  }
+  const mpz_class a2 = 2 * a;
+  isolate(p, left, a2, k + 1, out);
+  if (sgn(left[d]) == 0) {  // the midpoint is a root
+    IsolatedRoot r;
+    r.exact = true;
+    r.at = {a2 + 1, k + 1};
+    out.push_back(std::move(r));
+  }
+  isolate(p, right, a2 + 1, k + 1, out);
+}
+
+}  // namespace
+
+void IntegerPoly::normalize() {
+  deg = 4;
+  while (deg >= 0 && sgn(c[deg]) == 0) --deg;
+}
+
+int sign_at(const IntegerPoly& p, const Dyadic& x) {
+  if (p.is_zero()) return 0;
+  // 2^(k deg) p(a / 2^k) = sum_i c_i a^i 2^(k (deg - i)), by Horner's scheme.
+  mpz_class acc = p.c[p.deg];
+  for (int i = p.deg - 1; i >= 0; --i)
+    acc = acc * x.a + shifted(p.c[i], static_cast<unsigned long>(x.k) * (p.deg - i));
+  return sgn(acc);
+}
+
+Dyadic to_dyadic(double t) {
+  Dyadic d;
+  if (t == 0) return d;  // a = 0, k = 0
+  int e = 0;
+  const double f = std::frexp(t, &e);     // t = f 2^e, f in [0.5, 1)
+  d.a = mpz_class(std::ldexp(f, 53));     // exact: a 53-bit integer
+  const int exponent = e - 53;            // t = a 2^exponent
+  if (exponent >= 0) {
+    d.a = shifted(d.a, static_cast<unsigned long>(exponent));
+  } else {
+    d.k = static_cast<unsigned>(-exponent);
+  }
+  return d;
+}
+
+int sign_at(const IntegerPoly& p, double t) { return sign_at(p, to_dyadic(t)); }
+
+IntegerPoly primitive_part(const IntegerPoly& p) {
+  IntegerPoly r = p;
+  if (r.is_zero()) return r;
+  mpz_class g = 0;
+  for (int i = 0; i <= r.deg; ++i) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), r.c[i].get_mpz_t());
+  if (sgn(r.leading()) < 0) g = -g;
+  for (int i = 0; i <= r.deg; ++i) mpz_divexact(r.c[i].get_mpz_t(), r.c[i].get_mpz_t(), g.get_mpz_t());
+  return r;
+}
+
+IntegerPoly derivative(const IntegerPoly& p) {
+  IntegerPoly r;
+  for (int i = 1; i <= p.deg; ++i) r.c[i - 1] = i * p.c[i];
+  r.normalize();
+  return r;
+}
+
+IntegerPoly gcd(const IntegerPoly& p, const IntegerPoly& q) {
+  IntegerPoly a = primitive_part(p), b = primitive_part(q);
+  if (a.deg < b.deg) std::swap(a, b);
+  while (!b.is_zero()) {
+    IntegerPoly r = pseudo_remainder(a, b);
+    a = std::move(b);
+    b = primitive_part(r);
+  }
+  return a;
+}
+
+IntegerPoly square_free_part(const IntegerPoly& p) {
+  const IntegerPoly pp = primitive_part(p);
+  if (pp.deg <= 1) return pp;
+  const IntegerPoly g = gcd(pp, derivative(pp));
+  if (g.deg <= 0) return pp;
+  return exact_quotient(pp, g);
+}
+
+std::vector<IsolatedRoot> roots_in_unit_interval(const IntegerPoly& p) {
+  std::vector<IsolatedRoot> roots;
+  if (p.deg <= 0) return roots;
+  const int d = p.deg;
+  const bool root_at_0 = sgn(p.c[0]) == 0;
+  mpz_class at_1 = 0;
+  for (int i = 0; i <= d; ++i) at_1 += p.c[i];
+  if (root_at_0) {
+    IsolatedRoot r;
+    r.exact = true;
+    r.at = {0, 0};
+    roots.push_back(std::move(r));
+  }
+  isolate(p, bernstein_coefficients(p.c, d), 0, 0, roots);
+  if (sgn(at_1) == 0) {
+    IsolatedRoot r;
+    r.exact = true;
+    r.at = {1, 0};
+    roots.push_back(std::move(r));
+  }
+  return roots;
+}
+
+int sign_on_cell(const IntegerPoly& q, const Dyadic& lo) {
+  if (q.is_zero()) return 0;
+  const int d = q.deg;
+  // Q(x) = 2^(k d) q((a + x) / 2^k) = sum_j e_j x^j for x in [0, 1], with
+  // e_j = sum_{i >= j} C(i, j) a^(i-j) 2^(k (d-i)) c_i; then Q's Bernstein coefficients.
+  std::array<mpz_class, 5> power_of_a;
+  power_of_a[0] = 1;
+  for (int i = 1; i <= d; ++i) power_of_a[i] = power_of_a[i - 1] * lo.a;
+  Coefficients e;
+  for (int j = 0; j <= d; ++j) {
+    e[j] = 0;
+    for (int i = j; i <= d; ++i)
+      e[j] += kBinomial[i][j] * power_of_a[i - j] *
+              shifted(q.c[i], static_cast<unsigned long>(lo.k) * (d - i));
+  }
+  const Coefficients b = bernstein_coefficients(e, d);
+  const int s = sgn(b[0]);
+  for (int j = 1; j <= d; ++j)
+    if (sgn(b[j]) != s) return 0;
+  return s;
+}
+
+void bisect(const IntegerPoly& p, IsolatedRoot& r) {
+  const Dyadic mid{2 * r.lo.a + 1, r.lo.k + 1};
+  const int s = sign_at(p, mid);
+  if (s == 0) {
+    r.exact = true;
+    r.at = mid;
+    return;
+  }
+  if (s == r.sign_at_lo) {
+    r.lo = mid;
+    r.hi = {2 * r.hi.a, r.hi.k + 1};
+  } else {
+    r.lo = {2 * r.lo.a, r.lo.k + 1};
+    r.hi = mid;
+  }
+}
+
+}  // namespace exactccd::exact
