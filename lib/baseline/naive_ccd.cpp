@@ -77,7 +77,7 @@ int naive_cubic_roots_in_unit_interval(double a, double b, double c, double d, d
 
 std::optional<double> naive_vertex_face_toi(const VertexFaceQuery& q) {
   double roots[3];
-  const int n = volume_roots(contact::vertex_face_volume(q), roots);
+  const int n = volume_roots(contact::polynomials(q).volume(), roots);
   for (int i = 0; i < n; ++i) {
     const double t = roots[i];
     const Vec3 p = at(q.p_t0, q.p_t1, t), a = at(q.a_t0, q.a_t1, t);
@@ -92,7 +92,7 @@ std::optional<double> naive_vertex_face_toi(const VertexFaceQuery& q) {
 
 std::optional<double> naive_edge_edge_toi(const EdgeEdgeQuery& q) {
   double roots[3];
-  const int n = volume_roots(contact::edge_edge_volume(q), roots);
+  const int n = volume_roots(contact::polynomials(q).volume(), roots);
   for (int i = 0; i < n; ++i) {
     const double t = roots[i];
     const Vec3 a0 = at(q.a0_t0, q.a0_t1, t), a1 = at(q.a1_t0, q.a1_t1, t);

@@ -1,11 +1,14 @@
 // The named polynomials in t whose signs decide contact (docs/design.md, "The contact rule").
 //
-// Written once, templated on the coefficient type NT: mpq_class for the exact path,
-// intervals or doubles for the filters. Each query's polynomials are built once; the rule in
-// contact_rule.hpp only asks for their signs at a time t.
+// Written once, templated on the coefficient type NT: mpq_class or mpz_class on the exact
+// paths, CGAL::Interval_nt in the interval filter, double in the naive baseline. Each
+// polynomial is built on first use and cached: the rule usually needs only a few of them
+// (a proper triangle never asks for its edges' segment tests), and on the exact paths every
+// multiplication costs a GMP call. A polynomial set belongs to one query and one thread.
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "contact/polynomial.hpp"
 #include "contact/vec3_ops.hpp"
@@ -25,26 +28,6 @@ struct PointOnSegmentPolys {
   Poly<NT, 2> dot;
 };
 
-/// Vertex-face polynomials of p against triangle (a, b, c).
-template <class NT>
-struct VertexFacePolys {
-  Poly<NT, 3> volume;                           ///< V = (b - a) . ((c - a) x (p - a))
-  PolyVec3<NT, 2> normal;                       ///< n = (b - a) x (c - a)
-  std::array<Poly<NT, 4>, 3> barycentric;       ///< n . (e_i x (p - v_i)), edges ab, bc, ca
-  std::array<PointOnSegmentPolys<NT>, 3> on_edge;  ///< p on ab, bc, ca
-};
-
-/// Edge-edge polynomials of segment (a0, a1) against segment (b0, b1).
-/// With da = a1 - a0, db = b1 - b0, r = b0 - a0, w = da x db, D = w . w, the coplanar lines
-/// meet at a0 + (U / D) da = b0 + (W / D) db where U = (r x db) . w and W = (r x da) . w.
-template <class NT>
-struct EdgeEdgePolys {
-  Poly<NT, 3> volume;                     ///< V = da . (r x (b1 - a0))
-  PolyVec3<NT, 2> direction_cross;        ///< w = da x db
-  std::array<Poly<NT, 4>, 4> parameters;  ///< U, D - U, W, D - W (all >= 0: alpha, beta in [0,1])
-  std::array<PointOnSegmentPolys<NT>, 4> endpoint_on_edge;  ///< a0, a1 on b; b0, b1 on a
-};
-
 /// The linear motion of a point from its position at t = 0 to its position at t = 1.
 template <class NT>
 PolyVec3<NT, 1> point_motion(const Vec3T<NT>& x0, const Vec3T<NT>& x1) {
@@ -57,79 +40,140 @@ PointOnSegmentPolys<NT> point_on_segment_polys(const PolyVec3<NT, 1>& q, const P
   return {cross(q - u, v - u), dot(q - u, v - q)};
 }
 
-/// The vertex-face volume V(t) = (b - a) . ((c - a) x (p - a)) alone (the cheap first test).
-template <class NT>
-Poly<NT, 3> vertex_face_volume(const VertexFaceQueryT<NT>& q) {
-  const auto p = point_motion(q.p_t0, q.p_t1);
-  const auto a = point_motion(q.a_t0, q.a_t1);
-  const auto b = point_motion(q.b_t0, q.b_t1);
-  const auto c = point_motion(q.c_t0, q.c_t1);
-  return dot(b - a, cross(c - a, p - a));
+/// Returns the cached value, computing it with make() on first use.
+template <class T, class Make>
+const T& cached(std::optional<T>& slot, Make&& make) {
+  if (!slot) slot.emplace(make());
+  return *slot;
 }
 
-/// The edge-edge volume V(t) = (a1 - a0) . ((b0 - a0) x (b1 - a0)) alone.
+/// Vertex-face polynomials of p against triangle (a, b, c).
 template <class NT>
-Poly<NT, 3> edge_edge_volume(const EdgeEdgeQueryT<NT>& q) {
-  const auto a0 = point_motion(q.a0_t0, q.a0_t1);
-  const auto a1 = point_motion(q.a1_t0, q.a1_t1);
-  const auto b0 = point_motion(q.b0_t0, q.b0_t1);
-  const auto b1 = point_motion(q.b1_t0, q.b1_t1);
-  return dot(a1 - a0, cross(b0 - a0, b1 - a0));
-}
+class VertexFacePolys {
+ public:
+  explicit VertexFacePolys(const VertexFaceQueryT<NT>& q)
+      : p_(point_motion(q.p_t0, q.p_t1)),
+        a_(point_motion(q.a_t0, q.a_t1)),
+        b_(point_motion(q.b_t0, q.b_t1)),
+        c_(point_motion(q.c_t0, q.c_t1)) {}
 
-/// Builds the vertex-face polynomials of a query whose coordinates are of type NT.
-template <class NT>
-VertexFacePolys<NT> vertex_face_polys(const VertexFaceQueryT<NT>& q) {
-  const auto p = point_motion(q.p_t0, q.p_t1);
-  const auto a = point_motion(q.a_t0, q.a_t1);
-  const auto b = point_motion(q.b_t0, q.b_t1);
-  const auto c = point_motion(q.c_t0, q.c_t1);
-  VertexFacePolys<NT> r;
-  r.normal = cross(b - a, c - a);
-  r.volume = vertex_face_volume(q);
-  r.barycentric = {dot(r.normal, cross(b - a, p - a)), dot(r.normal, cross(c - b, p - b)),
-                   dot(r.normal, cross(a - c, p - c))};
-  r.on_edge = {point_on_segment_polys(p, a, b), point_on_segment_polys(p, b, c),
-               point_on_segment_polys(p, c, a)};
-  return r;
-}
+  /// V = (b - a) . ((c - a) x (p - a)): zero iff the four points are coplanar.
+  const Poly<NT, 3>& volume() const {
+    return cached(volume_, [&] { return dot(b_ - a_, cross(c_ - a_, p_ - a_)); });
+  }
+  /// n = (b - a) x (c - a): zero iff the triangle is degenerate.
+  const PolyVec3<NT, 2>& normal() const {
+    return cached(normal_, [&] { return cross(b_ - a_, c_ - a_); });
+  }
+  /// n . (e_i x (p - v_i)) for the edges (a, b), (b, c), (c, a): |n|^2 times the barycentric
+  /// coordinate of p opposite the edge, when p is in the plane.
+  const Poly<NT, 4>& barycentric(int i) const {
+    return cached(barycentric_[i], [&] {
+      const auto& [u, v] = edge(i);
+      return dot(normal(), cross(v - u, p_ - u));
+    });
+  }
+  /// "p on the closed edge i" (see PointOnSegmentPolys).
+  const PointOnSegmentPolys<NT>& on_edge(int i) const {
+    return cached(on_edge_[i], [&] {
+      const auto& [u, v] = edge(i);
+      return point_on_segment_polys(p_, u, v);
+    });
+  }
 
-/// Builds the edge-edge polynomials of a query whose coordinates are of type NT.
+ private:
+  std::pair<const PolyVec3<NT, 1>&, const PolyVec3<NT, 1>&> edge(int i) const {
+    if (i == 0) return {a_, b_};
+    if (i == 1) return {b_, c_};
+    return {c_, a_};
+  }
+
+  PolyVec3<NT, 1> p_, a_, b_, c_;
+  mutable std::optional<Poly<NT, 3>> volume_;
+  mutable std::optional<PolyVec3<NT, 2>> normal_;
+  mutable std::array<std::optional<Poly<NT, 4>>, 3> barycentric_;
+  mutable std::array<std::optional<PointOnSegmentPolys<NT>>, 3> on_edge_;
+};
+
+/// Edge-edge polynomials of segment (a0, a1) against segment (b0, b1).
+/// With da = a1 - a0, db = b1 - b0, r = b0 - a0, w = da x db, D = w . w, the coplanar lines
+/// meet at a0 + (U / D) da = b0 + (W / D) db where U = (r x db) . w and W = (r x da) . w.
 template <class NT>
-EdgeEdgePolys<NT> edge_edge_polys(const EdgeEdgeQueryT<NT>& q) {
-  const auto a0 = point_motion(q.a0_t0, q.a0_t1);
-  const auto a1 = point_motion(q.a1_t0, q.a1_t1);
-  const auto b0 = point_motion(q.b0_t0, q.b0_t1);
-  const auto b1 = point_motion(q.b1_t0, q.b1_t1);
-  const auto da = a1 - a0;
-  const auto db = b1 - b0;
-  const auto r = b0 - a0;
-  EdgeEdgePolys<NT> e;
-  e.volume = edge_edge_volume(q);
-  e.direction_cross = cross(da, db);
-  const auto d = dot(e.direction_cross, e.direction_cross);
-  const auto u = dot(cross(r, db), e.direction_cross);
-  const auto w = dot(cross(r, da), e.direction_cross);
-  e.parameters = {u, d - u, w, d - w};
-  e.endpoint_on_edge = {point_on_segment_polys(a0, b0, b1), point_on_segment_polys(a1, b0, b1),
-                        point_on_segment_polys(b0, a0, a1), point_on_segment_polys(b1, a0, a1)};
-  return e;
+class EdgeEdgePolys {
+ public:
+  explicit EdgeEdgePolys(const EdgeEdgeQueryT<NT>& q)
+      : a0_(point_motion(q.a0_t0, q.a0_t1)),
+        a1_(point_motion(q.a1_t0, q.a1_t1)),
+        b0_(point_motion(q.b0_t0, q.b0_t1)),
+        b1_(point_motion(q.b1_t0, q.b1_t1)) {}
+
+  /// V = (a1 - a0) . ((b0 - a0) x (b1 - a0)): zero iff the four points are coplanar.
+  const Poly<NT, 3>& volume() const {
+    return cached(volume_, [&] { return dot(a1_ - a0_, cross(b0_ - a0_, b1_ - a0_)); });
+  }
+  /// w = da x db: zero iff the edges are parallel or one has zero length.
+  const PolyVec3<NT, 2>& direction_cross() const {
+    return cached(direction_cross_, [&] { return cross(a1_ - a0_, b1_ - b0_); });
+  }
+  /// U, D - U, W, D - W for i = 0..3: all >= 0 iff alpha = U / D and beta = W / D are in [0, 1].
+  const Poly<NT, 4>& parameter(int i) const {
+    return cached(parameter_[i], [&] {
+      const auto& w = direction_cross();
+      const auto r = b0_ - a0_;
+      const Poly<NT, 4> numerator = dot(cross(r, i < 2 ? b1_ - b0_ : a1_ - a0_), w);
+      return i % 2 == 0 ? numerator : dot(w, w) - numerator;
+    });
+  }
+  /// a0 on edge b, a1 on edge b, b0 on edge a, b1 on edge a, for i = 0..3.
+  const PointOnSegmentPolys<NT>& endpoint_on_edge(int i) const {
+    return cached(endpoint_on_edge_[i], [&] {
+      switch (i) {
+        case 0: return point_on_segment_polys(a0_, b0_, b1_);
+        case 1: return point_on_segment_polys(a1_, b0_, b1_);
+        case 2: return point_on_segment_polys(b0_, a0_, a1_);
+        default: return point_on_segment_polys(b1_, a0_, a1_);
+      }
+    });
+  }
+
+ private:
+  PolyVec3<NT, 1> a0_, a1_, b0_, b1_;
+  mutable std::optional<Poly<NT, 3>> volume_;
+  mutable std::optional<PolyVec3<NT, 2>> direction_cross_;
+  mutable std::array<std::optional<Poly<NT, 4>>, 4> parameter_;
+  mutable std::array<std::optional<PointOnSegmentPolys<NT>>, 4> endpoint_on_edge_;
+};
+
+/// The polynomial set of a query, chosen by overload.
+template <class NT>
+VertexFacePolys<NT> polynomials(const VertexFaceQueryT<NT>& q) {
+  return VertexFacePolys<NT>(q);
+}
+template <class NT>
+EdgeEdgePolys<NT> polynomials(const EdgeEdgeQueryT<NT>& q) {
+  return EdgeEdgePolys<NT>(q);
 }
 
 /// Calls f on every polynomial the contact rule may consult apart from the volume: the
 /// candidate times of a query that is coplanar for all t are the roots of these.
 template <class NT, class F>
 void for_each_in_plane_poly(const VertexFacePolys<NT>& P, F&& f) {
-  f(P.normal.x), f(P.normal.y), f(P.normal.z);
-  for (const auto& b : P.barycentric) f(b);
-  for (const auto& s : P.on_edge) f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);
+  f(P.normal().x), f(P.normal().y), f(P.normal().z);
+  for (int i = 0; i < 3; ++i) f(P.barycentric(i));
+  for (int i = 0; i < 3; ++i) {
+    const auto& s = P.on_edge(i);
+    f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);
+  }
 }
 
 template <class NT, class F>
 void for_each_in_plane_poly(const EdgeEdgePolys<NT>& P, F&& f) {
-  f(P.direction_cross.x), f(P.direction_cross.y), f(P.direction_cross.z);
-  for (const auto& u : P.parameters) f(u);
-  for (const auto& s : P.endpoint_on_edge) f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);
+  f(P.direction_cross().x), f(P.direction_cross().y), f(P.direction_cross().z);
+  for (int i = 0; i < 4; ++i) f(P.parameter(i));
+  for (int i = 0; i < 4; ++i) {
+    const auto& s = P.endpoint_on_edge(i);
+    f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);
+  }
 }
 
 }  // namespace exactccd::contact

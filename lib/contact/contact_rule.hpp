@@ -32,11 +32,11 @@ bool is_nonzero(const PolyVec3<NT, 2>& v, SignOracle&& sign) {
 ///   the three closed segments ab, bc, ca.
 template <class NT, class SignOracle>
 bool vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
-  if (is_nonzero(P.normal, sign))
-    return sign(P.barycentric[0]) >= 0 && sign(P.barycentric[1]) >= 0 &&
-           sign(P.barycentric[2]) >= 0;
-  return point_on_segment(P.on_edge[0], sign) || point_on_segment(P.on_edge[1], sign) ||
-         point_on_segment(P.on_edge[2], sign);
+  if (is_nonzero(P.normal(), sign))
+    return sign(P.barycentric(0)) >= 0 && sign(P.barycentric(1)) >= 0 &&
+           sign(P.barycentric(2)) >= 0;
+  return point_on_segment(P.on_edge(0), sign) || point_on_segment(P.on_edge(1), sign) ||
+         point_on_segment(P.on_edge(2), sign);
 }
 
 /// Edge-edge contact at a time where the volume V vanishes (the edges are coplanar):
@@ -46,13 +46,13 @@ bool vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sig
 ///   on the other (the intersection of two collinear segments is bounded by such endpoints).
 template <class NT, class SignOracle>
 bool edge_edge_in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
-  if (is_nonzero(P.direction_cross, sign))
-    return sign(P.parameters[0]) >= 0 && sign(P.parameters[1]) >= 0 &&
-           sign(P.parameters[2]) >= 0 && sign(P.parameters[3]) >= 0;
-  return point_on_segment(P.endpoint_on_edge[0], sign) ||
-         point_on_segment(P.endpoint_on_edge[1], sign) ||
-         point_on_segment(P.endpoint_on_edge[2], sign) ||
-         point_on_segment(P.endpoint_on_edge[3], sign);
+  if (is_nonzero(P.direction_cross(), sign))
+    return sign(P.parameter(0)) >= 0 && sign(P.parameter(1)) >= 0 &&
+           sign(P.parameter(2)) >= 0 && sign(P.parameter(3)) >= 0;
+  return point_on_segment(P.endpoint_on_edge(0), sign) ||
+         point_on_segment(P.endpoint_on_edge(1), sign) ||
+         point_on_segment(P.endpoint_on_edge(2), sign) ||
+         point_on_segment(P.endpoint_on_edge(3), sign);
 }
 
 /// The in-plane part of the contact rule, chosen by overload.
@@ -69,7 +69,7 @@ bool in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
 /// and the in-plane rule holds.
 template <class Polys, class SignOracle>
 bool in_contact(const Polys& P, SignOracle&& sign) {
-  return sign(P.volume) == 0 && in_plane_contact(P, sign);
+  return sign(P.volume()) == 0 && in_plane_contact(P, sign);
 }
 
 }  // namespace exactccd::contact

@@ -57,8 +57,8 @@ void append_roots_in_unit_interval(const AlgebraicKernel& kernel, const IntegerP
 template <class Polys>
 std::vector<Root> candidate_times(const AlgebraicKernel& kernel, const Polys& P) {
   std::vector<Root> times;
-  if (!contact::is_zero(P.volume)) {
-    append_roots_in_unit_interval(kernel, integer_poly(P.volume), times);
+  if (!contact::is_zero(P.volume())) {
+    append_roots_in_unit_interval(kernel, integer_poly(P.volume()), times);
     return times;  // solve_1 returns them sorted and distinct
   }
   times.push_back(rational_root(0));
@@ -125,19 +125,19 @@ std::optional<TimeInterval> toi(const Polys& P) {
 }  // namespace
 
 bool vertex_face_ccd(const RationalVertexFaceQuery& q) {
-  return earliest_contact(contact::vertex_face_polys(q)).has_value();
+  return earliest_contact(contact::polynomials(q)).has_value();
 }
 
 bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) {
-  return earliest_contact(contact::edge_edge_polys(q)).has_value();
+  return earliest_contact(contact::polynomials(q)).has_value();
 }
 
 std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
-  return toi(contact::vertex_face_polys(q));
+  return toi(contact::polynomials(q));
 }
 
 std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) {
-  return toi(contact::edge_edge_polys(q));
+  return toi(contact::polynomials(q));
 }
 
 }  // namespace exactccd::exact

@@ -128,22 +128,6 @@ bool earlier(const TimeInterval& a, const TimeInterval& b) {
 }
 
 template <class IntegerQuery>
-auto volume(const IntegerQuery& q) {
-  if constexpr (std::is_same_v<IntegerQuery, VertexFaceQueryT<Integer>>)
-    return contact::vertex_face_volume(q);
-  else
-    return contact::edge_edge_volume(q);
-}
-
-template <class IntegerQuery>
-auto polynomials(const IntegerQuery& q) {
-  if constexpr (std::is_same_v<IntegerQuery, VertexFaceQueryT<Integer>>)
-    return contact::vertex_face_polys(q);
-  else
-    return contact::edge_edge_polys(q);
-}
-
-template <class IntegerQuery>
 StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
   std::deque<IntegerPoly> defining;  // stable addresses for Candidate::defining
   std::vector<Candidate> candidates;
@@ -153,12 +137,12 @@ StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
       candidates.push_back({std::move(r), &defining.back()});
   };
 
-  const IntegerPoly v = integer_poly(volume(q));
+  const auto P = contact::polynomials(q);
+  const IntegerPoly v = integer_poly(P.volume());
   const bool coplanar = v.is_zero();
   if (!coplanar) add_roots_of(v);  // increasing order
   if (!coplanar && candidates.empty()) return {Verdict::no_collision, std::nullopt};
 
-  const auto P = polynomials(q);
   if (coplanar) {
     for (const Dyadic& end : {Dyadic{0, 0}, Dyadic{1, 0}}) {
       Candidate c;

@@ -146,23 +146,10 @@ CellVerdict in_plane_verdict(const Polys& P, RootCell& cell) {
                  ? CellVerdict::contact
                  : CellVerdict::no_contact;
     } catch (const UncertainSign&) {
-      if (attempt == 0 && !narrow(P.volume, cell, 64)) return CellVerdict::uncertain;
+      if (attempt == 0 && !narrow(P.volume(), cell, 64)) return CellVerdict::uncertain;
     }
   }
   return CellVerdict::uncertain;
-}
-
-contact::Poly<Interval, 3> volume(const VertexFaceQueryT<Interval>& q) {
-  return contact::vertex_face_volume(q);
-}
-contact::Poly<Interval, 3> volume(const EdgeEdgeQueryT<Interval>& q) {
-  return contact::edge_edge_volume(q);
-}
-contact::VertexFacePolys<Interval> polynomials(const VertexFaceQueryT<Interval>& q) {
-  return contact::vertex_face_polys(q);
-}
-contact::EdgeEdgePolys<Interval> polynomials(const EdgeEdgeQueryT<Interval>& q) {
-  return contact::edge_edge_polys(q);
 }
 
 template <class IntervalQuery, class Query>
@@ -174,13 +161,13 @@ IntervalQuery to_interval_query(const Query& q) {
   return from_rows<IntervalQuery>(r);
 }
 
-/// The stage on one query; the in-plane polynomials are built only when V has roots.
+/// The stage on one query.
 template <class IntervalQuery>
 StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
+  const auto P = contact::polynomials(q);
   RootCells cells;
-  if (isolate(to_bernstein(volume(q)), 0.0, 1.0, 0, cells) == Isolation::failed) return {};
+  if (isolate(to_bernstein(P.volume()), 0.0, 1.0, 0, cells) == Isolation::failed) return {};
   if (cells.size == 0) return {Verdict::no_collision, std::nullopt};
-  const auto P = polynomials(q);
   bool earlier_uncertain = false;
   for (int i = 0; i < cells.size; ++i) {
     RootCell cell = cells.cells[i];
@@ -193,7 +180,7 @@ StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
     StageResult r{Verdict::collision, std::nullopt};
     // The TOI is this root only if no earlier root is uncertain; narrowing may still fail
     // (e.g. the root is itself a double), then the exact path encloses it.
-    if (want_toi && !earlier_uncertain && narrow(P.volume, cell, 1100))
+    if (want_toi && !earlier_uncertain && narrow(P.volume(), cell, 1100))
       r.toi = TimeInterval{cell.lo, cell.hi};
     return r;
   }
