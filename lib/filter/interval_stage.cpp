@@ -11,7 +11,11 @@
 //    coefficients have certain strict signs with exactly one sign change holds exactly one
 //    root, and it is simple (Descartes' rule of signs in the Bernstein basis: the number of
 //    roots in the open cell, with multiplicity, is the number of sign changes minus an even
-//    number). Anything else is halved, up to a depth limit; then the stage gives up.
+//    number). Anything else is halved, up to a depth limit; then the stage gives up. An
+//    interval that is exactly [0, 0] encloses only 0: the value is certainly zero. Such
+//    exact zeros at t = 0, t = 1 or a cell's midpoint are roots known exactly (common with
+//    small-integer or dyadic input, where interval arithmetic happens to be exact); zero
+//    coefficients are skipped when counting sign changes.
 // 2. Cells come out in increasing t. Over a root cell T every other polynomial of the rule is
 //    evaluated with interval Horner on T: an interval that excludes 0 gives the polynomial's
 //    sign at the root, an exact [0, 0] means the polynomial vanishes identically, anything else
@@ -63,28 +67,63 @@ void halve(const Bernstein& b, Bernstein& left, Bernstein& right) {
   right = {mid, b123, b23, b[3]};
 }
 
-/// An interval [lo, hi] of t holding exactly one simple root of V, with the sign of V at lo.
+/// Where V vanishes: either exactly at the double lo == hi (an exact zero found at a dyadic
+/// point), or at exactly one simple root in the open interval (lo, hi), with V's sign at lo.
 struct RootCell {
   double lo, hi;
   int sign_at_lo;
+  bool is_point() const { return lo == hi; }
+};
+
+/// Small fixed-capacity list: a cubic that is not identically zero has at most three roots.
+struct RootCells {
+  std::array<RootCell, 3> cells;
+  int size = 0;
+  bool overflow = false;
+  void push_back(const RootCell& c) {
+    if (size < 3)
+      cells[size++] = c;
+    else
+      overflow = true;
+  }
 };
 
 enum class Isolation { complete, failed };
 
-/// Appends the root cells of V in [lo, hi] (coefficients b) in increasing order.
-template <class Out>
-Isolation isolate(const Bernstein& b, double lo, double hi, int depth, Out& out) {
-  std::array<int, 4> s{};
-  bool all_certain = true;
+/// Sign class of a Bernstein coefficient: an interval that is exactly [0, 0] is a certain zero
+/// (interval arithmetic encloses the true value, so the true value is 0).
+enum class SignClass { negative, zero, positive, unknown };
+
+SignClass classify(const Interval& x) {
+  if (x.inf() > 0) return SignClass::positive;
+  if (x.sup() < 0) return SignClass::negative;
+  if (x.inf() == 0 && x.sup() == 0) return SignClass::zero;
+  return SignClass::unknown;
+}
+
+/// Appends the roots of V in the cell [lo, hi] with coefficients b, in increasing order; the
+/// roots at the cell's ends are the caller's. Descartes' rule in the Bernstein basis counts
+/// sign changes among the nonzero coefficients.
+Isolation isolate(const Bernstein& b, double lo, double hi, int depth, RootCells& out) {
+  std::array<SignClass, 4> s{};
+  bool certain = true, all_zero = true;
   for (int i = 0; i < 4; ++i) {
-    s[i] = certain_sign(b[i]);
-    all_certain = all_certain && s[i] != 0;
+    s[i] = classify(b[i]);
+    certain = certain && s[i] != SignClass::unknown;
+    all_zero = all_zero && s[i] == SignClass::zero;
   }
-  if (all_certain) {
-    const int changes = (s[0] != s[1]) + (s[1] != s[2]) + (s[2] != s[3]);
+  if (certain) {
+    if (all_zero) return Isolation::failed;  // V vanishes identically: a later stage decides
+    int changes = 0;
+    SignClass last = SignClass::zero;
+    for (SignClass c : s) {
+      if (c == SignClass::zero) continue;
+      changes += last != SignClass::zero && c != last;
+      last = c;
+    }
     if (changes == 0) return Isolation::complete;
-    if (changes == 1) {
-      out.push_back(RootCell{lo, hi, s[0]});
+    if (changes == 1 && s[0] != SignClass::zero && s[3] != SignClass::zero) {
+      out.push_back(RootCell{lo, hi, s[0] == SignClass::positive ? 1 : -1});
       return Isolation::complete;
     }
   }
@@ -93,31 +132,34 @@ Isolation isolate(const Bernstein& b, double lo, double hi, int depth, Out& out)
   halve(b, left, right);
   const double mid = lo + (hi - lo) / 2;  // exact: dyadic cells of [0, 1]
   if (isolate(left, lo, mid, depth + 1, out) == Isolation::failed) return Isolation::failed;
+  if (classify(left[3]) == SignClass::zero) out.push_back(RootCell{mid, mid, 0});
   return isolate(right, mid, hi, depth + 1, out);
 }
 
-/// Small fixed-capacity list: a cubic has at most three root cells.
-struct RootCells {
-  std::array<RootCell, 3> cells;
-  int size = 0;
-  void push_back(const RootCell& c) {
-    if (size < 3) cells[size++] = c;
-  }
-};
-
-/// Certified sign of V at the double t, or 0 when uncertain.
-int volume_sign_at(const contact::Poly<Interval, 3>& v, double t) {
-  return certain_sign(v(Interval(t)));
+/// The roots of V in [0, 1] in increasing order, exact zeros at 0 and 1 included.
+Isolation isolate_roots(const contact::Poly<Interval, 3>& v, RootCells& out) {
+  const Bernstein b = to_bernstein(v);
+  if (classify(b[0]) == SignClass::zero) out.push_back(RootCell{0.0, 0.0, 0});
+  if (isolate(b, 0.0, 1.0, 0, out) == Isolation::failed) return Isolation::failed;
+  if (classify(b[3]) == SignClass::zero) out.push_back(RootCell{1.0, 1.0, 0});
+  return out.overflow ? Isolation::failed : Isolation::complete;
 }
 
 /// Halves the root cell while V's sign at the midpoint is certain, until lo and hi are
-/// consecutive doubles. False when a midpoint's sign is uncertain (the cell is kept valid).
+/// consecutive doubles, or the midpoint is an exact zero (the cell becomes that point). False
+/// when a midpoint's sign is uncertain (the cell is kept valid).
 bool narrow(const contact::Poly<Interval, 3>& v, RootCell& cell, int max_steps) {
   for (int step = 0; step < max_steps && std::nextafter(cell.lo, kInf) < cell.hi; ++step) {
     double mid = cell.lo + (cell.hi - cell.lo) / 2;
     if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, kInf);
-    const int s = volume_sign_at(v, mid);
-    if (s == 0) return false;
+    const Interval value = v(Interval(mid));
+    const SignClass c = classify(value);
+    if (c == SignClass::unknown) return false;
+    if (c == SignClass::zero) {
+      cell = RootCell{mid, mid, 0};
+      return true;
+    }
+    const int s = c == SignClass::positive ? 1 : -1;
     (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
   }
   return true;
@@ -146,7 +188,8 @@ CellVerdict in_plane_verdict(const Polys& P, RootCell& cell) {
                  ? CellVerdict::contact
                  : CellVerdict::no_contact;
     } catch (const UncertainSign&) {
-      if (attempt == 0 && !narrow(P.volume(), cell, 64)) return CellVerdict::uncertain;
+      if (attempt == 0 && (cell.is_point() || !narrow(P.volume(), cell, 64)))
+        return CellVerdict::uncertain;
     }
   }
   return CellVerdict::uncertain;
@@ -166,7 +209,7 @@ template <class IntervalQuery>
 StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
   const auto P = contact::polynomials(q);
   RootCells cells;
-  if (isolate(to_bernstein(P.volume()), 0.0, 1.0, 0, cells) == Isolation::failed) return {};
+  if (isolate_roots(P.volume(), cells) == Isolation::failed) return {};
   if (cells.size == 0) return {Verdict::no_collision, std::nullopt};
   bool earlier_uncertain = false;
   for (int i = 0; i < cells.size; ++i) {
