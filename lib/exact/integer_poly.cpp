@@ -1,5 +1,7 @@
 #include "exact/integer_poly.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -170,7 +172,26 @@ IntegerPoly gcd(const IntegerPoly& p, const IntegerPoly& q) {
   return a;
 }
 
+namespace {
+
+/// True when p (degree <= 3) certainly has no multiple root: its discriminant is nonzero.
+/// Cheaper than a gcd with p' (no coefficient gcds), and the common case.
+bool has_nonzero_discriminant(const IntegerPoly& p) {
+  if (p.deg <= 1) return true;
+  if (p.deg == 2) return sgn(p.c[1] * p.c[1] - 4 * p.c[2] * p.c[0]) != 0;
+  if (p.deg == 3) {
+    const mpz_class &a = p.c[3], &b = p.c[2], &c = p.c[1], &d = p.c[0];
+    const mpz_class disc = 18 * a * b * c * d - 4 * b * b * b * d + b * b * c * c -
+                           4 * a * c * c * c - 27 * a * a * d * d;
+    return sgn(disc) != 0;
+  }
+  return false;  // degree 4: decide with the gcd
+}
+
+}  // namespace
+
 IntegerPoly square_free_part(const IntegerPoly& p) {
+  if (has_nonzero_discriminant(p)) return p;
   const IntegerPoly pp = primitive_part(p);
   if (pp.deg <= 1) return pp;
   const IntegerPoly g = gcd(pp, derivative(pp));
@@ -221,6 +242,91 @@ int sign_on_cell(const IntegerPoly& q, const Dyadic& lo) {
   for (int j = 1; j <= d; ++j)
     if (sgn(b[j]) != s) return 0;
   return s;
+}
+
+namespace {
+
+/// p's coefficients as long doubles, all scaled by one power of two (same signs and roots).
+std::array<long double, 5> scaled_coefficients(const IntegerPoly& p) {
+  long max_exp = LONG_MIN;
+  std::array<long double, 5> c{};
+  std::array<long, 5> e{};
+  std::array<double, 5> m{};
+  for (int i = 0; i <= p.deg; ++i) {
+    m[i] = mpz_get_d_2exp(&e[i], p.c[i].get_mpz_t());
+    if (m[i] != 0) max_exp = std::max(max_exp, e[i]);
+  }
+  for (int i = 0; i <= p.deg; ++i)
+    c[i] = m[i] == 0 ? 0.0L : std::ldexp(static_cast<long double>(m[i]), static_cast<int>(std::max(e[i] - max_exp, -20000L)));
+  return c;
+}
+
+long double approximate_value(const std::array<long double, 5>& c, int deg, long double t) {
+  long double v = c[deg];
+  for (int i = deg - 1; i >= 0; --i) v = v * t + c[i];
+  return v;
+}
+
+double to_double_down(const Dyadic& d) {
+  mpq_class x(d.a);
+  mpq_div_2exp(x.get_mpq_t(), x.get_mpq_t(), d.k);
+  return x.get_d();  // truncation: rounds down for x >= 0
+}
+
+}  // namespace
+
+namespace {
+
+/// -1, 0 or +1 as x compares to y.
+int compare(const Dyadic& x, const Dyadic& y) {
+  const unsigned k = std::max(x.k, y.k);
+  return cmp(shifted(x.a, k - x.k), shifted(y.a, k - y.k));
+}
+
+}  // namespace
+
+void refine_with_approximation(const IntegerPoly& p, IsolatedRoot& r) {
+  if (r.exact) return;
+  const std::array<long double, 5> c = scaled_coefficients(p);
+  long double lo = to_double_down(r.lo), hi = std::nextafter(to_double_down(r.hi), 2.0);
+  for (int i = 0; i < 80 && lo < hi; ++i) {  // approximate bisection: a guess, checked below
+    const long double mid = lo + (hi - lo) / 2;
+    if (mid <= lo || mid >= hi) break;
+    const long double v = approximate_value(c, p.deg, mid);
+    if ((v > 0) == (r.sign_at_lo > 0))
+      lo = mid;
+    else
+      hi = mid;
+  }
+  const long double approx = lo + (hi - lo) / 2;
+  const auto inside = [&](const Dyadic& x) { return compare(r.lo, x) < 0 && compare(x, r.hi) < 0; };
+  const double guess = static_cast<double>(approx);
+  for (double d : {guess, std::nextafter(guess, 0.0), std::nextafter(guess, 2.0)}) {
+    const Dyadic x = to_dyadic(d);
+    if (inside(x) && sign_at(p, x) == 0) {  // p's only root in the cell
+      r.exact = true;
+      r.at = x;
+      return;
+    }
+  }
+  const unsigned k = kRefinedCellBits;
+  if (k <= r.lo.k) return;
+  const mpz_class a(static_cast<double>(std::floor(std::ldexp(approx, static_cast<int>(k)))));
+  for (const mpz_class& start : {a, mpz_class(a - 1), mpz_class(a + 1)}) {
+    const Dyadic lo_x{start, k}, hi_x{start + 1, k};
+    if (!inside(lo_x) || !inside(hi_x)) continue;
+    const int s_lo = sign_at(p, lo_x), s_hi = sign_at(p, hi_x);
+    if (s_lo == 0 || s_hi == 0) {  // an exact dyadic root
+      r.exact = true;
+      r.at = s_lo == 0 ? lo_x : hi_x;
+      return;
+    }
+    if (s_lo == r.sign_at_lo && s_hi != s_lo) {
+      r.lo = lo_x;
+      r.hi = hi_x;
+      return;
+    }
+  }
 }
 
 void bisect(const IntegerPoly& p, IsolatedRoot& r) {

@@ -50,7 +50,8 @@ IntegerPoly derivative(const IntegerPoly& p);
 /// gcd(p, q) up to a constant factor, primitive (primitive PRS). Both must be nonzero.
 IntegerPoly gcd(const IntegerPoly& p, const IntegerPoly& q);
 
-/// p / gcd(p, p'): the same real roots, all simple. p must be nonzero.
+/// A polynomial with the same real roots as p, all simple: p itself when its discriminant is
+/// nonzero, otherwise the primitive part of p / gcd(p, p'). p must be nonzero.
 IntegerPoly square_free_part(const IntegerPoly& p);
 
 /// A real root of a square-free polynomial in [0, 1]: either exactly the dyadic `at`, or the
@@ -71,6 +72,17 @@ std::vector<IsolatedRoot> roots_in_unit_interval(const IntegerPoly& p);
 /// The sign of q on the whole closed cell [lo, lo + 2^-lo.k] when it is constant and nonzero
 /// there (certified by the signs of q's Bernstein coefficients on the cell), otherwise 0.
 int sign_on_cell(const IntegerPoly& q, const Dyadic& lo);
+
+/// Refines a non-exact root of p with a long-double approximation, checked exactly:
+/// - the root becomes exact when it is one of the three doubles nearest to the approximation
+///   (queries built from double data often collide at a double time);
+/// - otherwise its cell shrinks to width 2^-kRefinedCellBits around the approximation when the
+///   exact signs of p at the new ends confirm it (p has one root in the old cell, so the new
+///   cell holds the same root).
+/// Either way the root is unchanged and certain; only the work of later sign queries drops.
+void refine_with_approximation(const IntegerPoly& p, IsolatedRoot& r);
+
+constexpr unsigned kRefinedCellBits = 61;
 
 /// Halves the cell of a non-exact root once (exact sign of p at the midpoint); the root becomes
 /// exact when the midpoint is the root.

@@ -84,6 +84,7 @@ struct RootSignOracle {
     if (q.is_zero()) return 0;
     IsolatedRoot& r = candidate.root;
     if (r.exact) return exact::sign_at(q, r.at);
+    if (const int s = exact::sign_on_cell(q, r.lo); s != 0) return s;
     const IntegerPoly g = exact::gcd(*candidate.defining, q);
     if (g.deg >= 1 && exact::sign_at(g, r.lo) * exact::sign_at(g, r.hi) < 0) return 0;
     for (;;) {
@@ -133,8 +134,10 @@ StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
   std::vector<Candidate> candidates;
   const auto add_roots_of = [&](const IntegerPoly& p) {
     defining.push_back(exact::square_free_part(p));
-    for (IsolatedRoot& r : exact::roots_in_unit_interval(defining.back()))
+    for (IsolatedRoot& r : exact::roots_in_unit_interval(defining.back())) {
+      exact::refine_with_approximation(defining.back(), r);
       candidates.push_back({std::move(r), &defining.back()});
+    }
   };
 
   const auto P = contact::polynomials(q);
