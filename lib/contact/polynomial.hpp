@@ -6,11 +6,23 @@
 // check that no product exceeds the degree the proofs in docs/design.md assume.
 #pragma once
 
+#include <gmpxx.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
 
 namespace exactccd::contact {
+
+/// acc += a * b. The overload for GMP integers multiplies in place (mpz_addmul): the exact
+/// stages spend most of their time allocating temporaries otherwise.
+template <class NT>
+void multiply_add(NT& acc, const NT& a, const NT& b) {
+  acc = acc + a * b;
+}
+inline void multiply_add(mpz_class& acc, const mpz_class& a, const mpz_class& b) {
+  mpz_addmul(acc.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+}
 
 /// p(t) = c[0] + c[1] t + ... + c[D] t^D over the number type NT.
 template <class NT, int D>
@@ -68,7 +80,7 @@ template <class NT, int A, int B>
 Poly<NT, A + B> operator*(const Poly<NT, A>& p, const Poly<NT, B>& q) {
   auto r = Poly<NT, A + B>::zero();
   for (int i = 0; i <= A; ++i)
-    for (int j = 0; j <= B; ++j) r.c[i + j] = r.c[i + j] + p.c[i] * q.c[j];
+    for (int j = 0; j <= B; ++j) multiply_add(r.c[i + j], p.c[i], q.c[j]);
   return r;
 }
 

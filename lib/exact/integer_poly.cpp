@@ -246,18 +246,24 @@ int sign_on_cell(const IntegerPoly& q, const Dyadic& lo) {
 
 namespace {
 
-/// p's coefficients as long doubles, all scaled by one power of two (same signs and roots).
+/// p's coefficients as long doubles (64-bit significands, so the guess below is accurate to
+/// about 2^-64 relative), all scaled by one power of two (same signs and roots).
 std::array<long double, 5> scaled_coefficients(const IntegerPoly& p) {
-  long max_exp = LONG_MIN;
-  std::array<long double, 5> c{};
-  std::array<long, 5> e{};
-  std::array<double, 5> m{};
+  std::array<long, 5> shift{};
+  std::array<long double, 5> top{};
+  long max_bits = 0;
   for (int i = 0; i <= p.deg; ++i) {
-    m[i] = mpz_get_d_2exp(&e[i], p.c[i].get_mpz_t());
-    if (m[i] != 0) max_exp = std::max(max_exp, e[i]);
+    const long bits = static_cast<long>(mpz_sizeinbase(p.c[i].get_mpz_t(), 2));
+    shift[i] = std::max(bits - 64, 0L);  // keep the leading 64 bits
+    mpz_class t;
+    mpz_tdiv_q_2exp(t.get_mpz_t(), p.c[i].get_mpz_t(), static_cast<unsigned long>(shift[i]));
+    mpz_class magnitude = abs(t);
+    top[i] = static_cast<long double>(mpz_get_ui(magnitude.get_mpz_t())) * sgn(t);
+    if (sgn(p.c[i]) != 0) max_bits = std::max(max_bits, bits);
   }
+  std::array<long double, 5> c{};
   for (int i = 0; i <= p.deg; ++i)
-    c[i] = m[i] == 0 ? 0.0L : std::ldexp(static_cast<long double>(m[i]), static_cast<int>(std::max(e[i] - max_exp, -20000L)));
+    c[i] = std::ldexp(top[i], static_cast<int>(std::max(shift[i] - max_bits, -20000L)));
   return c;
 }
 
@@ -311,7 +317,8 @@ void refine_with_approximation(const IntegerPoly& p, IsolatedRoot& r) {
   }
   const unsigned k = kRefinedCellBits;
   if (k <= r.lo.k) return;
-  const mpz_class a(static_cast<double>(std::floor(std::ldexp(approx, static_cast<int>(k)))));
+  // approx in [0, 1], so floor(approx 2^k) < 2^56 fits an unsigned long exactly.
+  const mpz_class a(static_cast<unsigned long>(std::floor(std::ldexp(approx, static_cast<int>(k)))));
   for (const mpz_class& start : {a, mpz_class(a - 1), mpz_class(a + 1)}) {
     const Dyadic lo_x{start, k}, hi_x{start + 1, k};
     if (!inside(lo_x) || !inside(hi_x)) continue;

@@ -82,7 +82,7 @@ int sign_on_cell(const IntegerPoly& q, const Dyadic& lo);
 /// Either way the root is unchanged and certain; only the work of later sign queries drops.
 void refine_with_approximation(const IntegerPoly& p, IsolatedRoot& r);
 
-constexpr unsigned kRefinedCellBits = 61;
+constexpr unsigned kRefinedCellBits = 56;  // long-double guesses of ill-conditioned roots err by ~2^-60
 
 /// Halves the cell of a non-exact root once (exact sign of p at the midpoint); the root becomes
 /// exact when the midpoint is the root.
