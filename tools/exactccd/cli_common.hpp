@@ -1,0 +1,68 @@
+// Shared pieces of the exactccd subcommands: option parsing helpers, loading benchmark files,
+// running one method over a dataset.
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "exactccd/exactccd.hpp"
+#include "io/benchmark_csv.hpp"
+
+namespace exactccd::cli {
+
+/// Exit codes of every subcommand.
+enum ExitCode : int {
+  kExitOk = 0,           ///< ran (whatever it found)
+  kExitInternal = 1,     ///< unexpected internal error
+  kExitUsage = 2,        ///< bad command line or malformed input file
+};
+
+/// A command-line or input error: printed as "exactccd: <message>", exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+enum class QueryKind { vertex_face, edge_edge };
+
+/// "vf" / "ee" (also "vertex-face" / "edge-edge").
+QueryKind parse_kind(const std::string& s);
+std::string kind_name(QueryKind k);  ///< "vf" or "ee"
+
+/// The kind named by a path containing "vertex-face" or "edge-edge", if any.
+std::optional<QueryKind> kind_from_path(const std::string& path);
+
+/// "filtered", "exact", "naive".
+Method parse_method(const std::string& s);
+std::string method_name(Method m);
+
+/// A loaded benchmark file.
+struct Dataset {
+  std::string name;     ///< file name or bundled dataset name
+  std::string path;
+  QueryKind kind;
+  io::BenchmarkQueries queries;
+  /// Each query in doubles when all its coordinates are exact doubles.
+  std::vector<std::optional<std::array<Vec3, 8>>> doubles;
+};
+
+/// Reads and parses a benchmark CSV (throws UsageError on a missing file, io::ParseError on a
+/// malformed one). kind: explicit, or inferred from the path.
+Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind);
+
+/// The answer of one method on query i: the TOI when it collides. Rational queries that are
+/// not exact doubles run the exact path (naive rounds them to doubles).
+std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method method,
+                                      StageCounters* counters, bool want_toi);
+
+/// Seconds since an arbitrary epoch (steady clock).
+inline double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// Value of option `--name VALUE` at argv[i] (advances i), or UsageError when missing.
+std::string option_value(int argc, char** argv, int& i);
+
+}  // namespace exactccd::cli

@@ -1,0 +1,65 @@
+// exactccd: the command-line program. Dispatches to one subcommand per file.
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "cli_common.hpp"
+#include "subcommands.hpp"
+
+namespace {
+
+struct Subcommand {
+  const char* name;
+  int (*run)(int, char**);
+  const char* summary;
+};
+
+constexpr Subcommand kSubcommands[] = {
+    {"check", exactccd::cli::run_check, "answer benchmark CSV queries and compare with their truth"},
+};
+
+void print_help() {
+  std::cout << "usage: exactccd <subcommand> [options]\n\n"
+               "Exact continuous collision detection (vertex-face and edge-edge).\n\nsubcommands:\n";
+  for (const Subcommand& s : kSubcommands) std::cout << "  " << s.name << "\t" << s.summary << "\n";
+  std::cout << "\n  exactccd <subcommand> --help   options of one subcommand\n"
+               "  exactccd --version             the version\n\n"
+               "exit codes: 0 ran, 1 internal error, 2 bad usage or malformed input.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace exactccd::cli;
+  if (argc < 2) {
+    print_help();
+    return kExitUsage;
+  }
+  const std::string first = argv[1];
+  if (first == "-h" || first == "--help" || first == "help") {
+    print_help();
+    return kExitOk;
+  }
+  if (first == "--version") {
+    std::cout << "exactccd " << EXACTCCD_VERSION << "\n";
+    return kExitOk;
+  }
+  for (const Subcommand& s : kSubcommands) {
+    if (first != s.name) continue;
+    try {
+      return s.run(argc - 2, argv + 2);
+    } catch (const UsageError& e) {
+      std::cerr << "exactccd: " << e.what() << "\n";
+      return kExitUsage;
+    } catch (const exactccd::io::ParseError& e) {
+      std::cerr << "exactccd: " << e.what() << "\n";
+      return kExitUsage;
+    } catch (const std::exception& e) {
+      std::cerr << "exactccd: internal error: " << e.what() << "\n";
+      return kExitInternal;
+    }
+  }
+  std::cerr << "exactccd: unknown subcommand '" << first << "' (see exactccd --help)\n";
+  return kExitUsage;
+}
