@@ -145,24 +145,32 @@ Isolation isolate_roots(const contact::Poly<Interval, 3>& v, RootCells& out) {
   return out.overflow ? Isolation::failed : Isolation::complete;
 }
 
-/// Halves the root cell while V's sign at the midpoint is certain, until lo and hi are
-/// consecutive doubles, or the midpoint is an exact zero (the cell becomes that point). False
-/// when a midpoint's sign is uncertain (the cell is kept valid).
-bool narrow(const contact::Poly<Interval, 3>& v, RootCell& cell, int max_steps) {
-  for (int step = 0; step < max_steps && std::nextafter(cell.lo, kInf) < cell.hi; ++step) {
+/// How far narrow() got.
+enum class Narrowing {
+  done,     ///< lo and hi are consecutive doubles, or the cell became an exact point
+  partial,  ///< max_steps halvings done
+  stuck,    ///< a midpoint's sign is uncertain; the cell is still valid, just not narrower
+};
+
+/// Halves the root cell while V's sign at the midpoint is certain, at most max_steps times,
+/// until lo and hi are consecutive doubles or the midpoint is an exact zero (the cell becomes
+/// that point).
+Narrowing narrow(const contact::Poly<Interval, 3>& v, RootCell& cell, int max_steps) {
+  for (int step = 0; step < max_steps; ++step) {
+    if (cell.is_point() || !(std::nextafter(cell.lo, kInf) < cell.hi)) return Narrowing::done;
     double mid = cell.lo + (cell.hi - cell.lo) / 2;
     if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, kInf);
-    const Interval value = v(Interval(mid));
-    const SignClass c = classify(value);
-    if (c == SignClass::unknown) return false;
+    const SignClass c = classify(v(Interval(mid)));
+    if (c == SignClass::unknown) return Narrowing::stuck;
     if (c == SignClass::zero) {
       cell = RootCell{mid, mid, 0};
-      return true;
+      return Narrowing::done;
     }
     const int s = c == SignClass::positive ? 1 : -1;
     (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
   }
-  return true;
+  return cell.is_point() || !(std::nextafter(cell.lo, kInf) < cell.hi) ? Narrowing::done
+                                                                         : Narrowing::partial;
 }
 
 /// Sign oracle over a time interval: certain signs or UncertainSign.
@@ -180,16 +188,20 @@ struct IntervalSignOracle {
 
 enum class CellVerdict { contact, no_contact, uncertain };
 
+/// The in-plane rule over a root cell; on an uncertain sign the cell is narrowed (16 halvings,
+/// then to consecutive doubles) and the rule retried, while narrowing makes progress.
 template <class Polys>
 CellVerdict in_plane_verdict(const Polys& P, RootCell& cell) {
-  for (int attempt = 0; attempt < 2; ++attempt) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
     try {
       return contact::in_plane_contact(P, IntervalSignOracle{Interval(cell.lo, cell.hi)})
                  ? CellVerdict::contact
                  : CellVerdict::no_contact;
     } catch (const UncertainSign&) {
-      if (attempt == 0 && (cell.is_point() || !narrow(P.volume(), cell, 64)))
-        return CellVerdict::uncertain;
+      if (cell.is_point()) return CellVerdict::uncertain;
+      const RootCell before = cell;
+      narrow(P.volume(), cell, attempt == 0 ? 16 : 1100);
+      if (cell.lo == before.lo && cell.hi == before.hi) return CellVerdict::uncertain;
     }
   }
   return CellVerdict::uncertain;
@@ -223,7 +235,7 @@ StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
     StageResult r{Verdict::collision, std::nullopt};
     // The TOI is this root only if no earlier root is uncertain; narrowing may still fail
     // (e.g. the root is itself a double), then the exact path encloses it.
-    if (want_toi && !earlier_uncertain && narrow(P.volume(), cell, 1100))
+    if (want_toi && !earlier_uncertain && narrow(P.volume(), cell, 1100) == Narrowing::done)
       r.toi = TimeInterval{cell.lo, cell.hi};
     return r;
   }

@@ -1,0 +1,74 @@
+// Micro-costs of each stage of the filtered method, and of the naive and exact methods, on
+// representative single queries (Google Benchmark). Whole-dataset figures: `exactccd bench`.
+//
+//   build/stage_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include "exactccd/exactccd.hpp"
+#include "filter/integer_stage.hpp"
+#include "filter/interval_stage.hpp"
+#include "filter/volume_exclusion.hpp"
+
+namespace {
+
+using exactccd::Method;
+using exactccd::VertexFaceQuery;
+
+// A vertex passing well above a moving triangle: V(t) keeps its sign (stage 1 decides).
+const VertexFaceQuery kMiss{{0.3, 0.2, 1.0},  {0.0, 0.0, 0.0}, {1.0, 0.1, 0.0}, {0.1, 1.0, 0.05},
+                            {0.35, 0.25, 0.8}, {0.0, 0.0, 0.1}, {1.0, 0.1, 0.1}, {0.1, 1.0, 0.1}};
+// A vertex falling through the triangle interior at an irrational-looking time (stage 2).
+const VertexFaceQuery kHit{{0.3, 0.2, 1.0},  {0.0, 0.0, 0.0}, {1.0, 0.1, 0.0}, {0.1, 1.0, 0.05},
+                           {0.31, 0.21, -0.7}, {0.0, 0.0, 0.1}, {1.0, 0.1, 0.1}, {0.1, 1.0, 0.1}};
+// A vertex hitting a triangle vertex exactly (a sign vanishes at the root: stage 3).
+const VertexFaceQuery kThroughVertex{{0.0, 0.0, 1.0},  {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
+                                     {0.0, 0.0, -2.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}};
+
+// Each benchmark copies its query and hides it from the optimiser (DoNotOptimize on the copy),
+// so that no part of the computation is folded at compile time.
+void BM_VolumeExclusion(benchmark::State& state) {
+  VertexFaceQuery q = kMiss;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::filter::vertex_face_volume_excluded(q));
+  }
+}
+BENCHMARK(BM_VolumeExclusion);
+
+void BM_IntervalStage(benchmark::State& state) {
+  VertexFaceQuery q = kHit;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::filter::vertex_face_interval_stage(q, false));
+  }
+}
+BENCHMARK(BM_IntervalStage);
+
+void BM_IntegerStage(benchmark::State& state) {
+  VertexFaceQuery q = kThroughVertex;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::filter::vertex_face_integer_stage(q, false));
+  }
+}
+BENCHMARK(BM_IntegerStage);
+
+void BM_Method(benchmark::State& state, const VertexFaceQuery& query, Method m) {
+  VertexFaceQuery q = query;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::vertex_face_ccd(q, m));
+  }
+}
+BENCHMARK_CAPTURE(BM_Method, naive_miss, kMiss, Method::naive);
+BENCHMARK_CAPTURE(BM_Method, filtered_miss, kMiss, Method::filtered);
+BENCHMARK_CAPTURE(BM_Method, exact_miss, kMiss, Method::exact);
+BENCHMARK_CAPTURE(BM_Method, naive_hit, kHit, Method::naive);
+BENCHMARK_CAPTURE(BM_Method, filtered_hit, kHit, Method::filtered);
+BENCHMARK_CAPTURE(BM_Method, exact_hit, kHit, Method::exact);
+BENCHMARK_CAPTURE(BM_Method, filtered_through_vertex, kThroughVertex, Method::filtered);
+BENCHMARK_CAPTURE(BM_Method, exact_through_vertex, kThroughVertex, Method::exact);
+
+}  // namespace
+
+BENCHMARK_MAIN();

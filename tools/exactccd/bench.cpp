@@ -1,0 +1,210 @@
+// exactccd bench: every method on the same loaded queries, several repetitions.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "subcommands.hpp"
+
+namespace exactccd::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kHelp = R"(usage: exactccd bench [options] [FILE.csv...]
+
+Runs every method on the same loaded queries and reports, per dataset and method: mean and
+median time per query in ns, false positives and false negatives against the exact answer,
+the queries that reached the exact CGAL fallback, and the share decided by each filter stage.
+
+Without files it runs the bundled datasets: the shared benchmark's unit-tests (when present)
+and the simulation-like sets under data/sim (dataset names starting with "sim").
+Each file given is one dataset.
+
+Timing: each repetition times the whole dataset for each method in turn (methods interleaved
+within a repetition, so drift affects them alike); time per query = elapsed / queries.
+mean_ns and median_ns are the mean and median of that figure over the repetitions.
+
+options:
+  --kind vf|ee         query kind of the files (default: inferred from the path)
+  --repetitions N      repetitions per dataset and method (default 5)
+  --methods LIST       comma-separated subset of naive,filtered,exact (default: all three)
+  --json FILE          also write the results as a JSON array ('-' for stdout; the table then
+                       goes to stderr)
+  -h, --help           this help
+exit codes: 0 ran, 2 bad usage or malformed input, 1 internal error.
+)";
+
+struct Result {
+  std::string dataset, kind, method;
+  std::size_t queries = 0, fp = 0, fn = 0;
+  double mean_ns = 0, median_ns = 0;
+  StageCounters stages;
+  std::uint64_t exact_fallbacks = 0;
+};
+
+std::vector<Method> parse_methods(const std::string& list) {
+  std::vector<Method> out;
+  std::stringstream ss(list);
+  for (std::string m; std::getline(ss, m, ',');) out.push_back(parse_method(m));
+  if (out.empty()) throw UsageError("bench: --methods is empty");
+  return out;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+std::vector<std::string> bundled_files() {
+  std::vector<std::string> files;
+  const fs::path sample = fs::path(EXACTCCD_SAMPLE_QUERIES_DIR) / "unit-tests";
+  for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
+                        "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"})
+    if (fs::exists(sample / f)) files.push_back((sample / f).string());
+  const fs::path sim = fs::path(EXACTCCD_DATA_DIR) / "sim";
+  if (fs::is_directory(sim)) {
+    std::vector<std::string> sims;
+    for (const auto& e : fs::directory_iterator(sim))
+      if (e.path().extension() == ".csv") sims.push_back(e.path().string());
+    std::sort(sims.begin(), sims.end());
+    files.insert(files.end(), sims.begin(), sims.end());
+  }
+  return files;
+}
+
+/// A short dataset name: "unit-tests/vertex-face/data_0_0" or the file's stem for others.
+std::string dataset_name(const std::string& path) {
+  const fs::path p(path);
+  const std::string parent = p.parent_path().filename().string();
+  if (parent == "vertex-face" || parent == "edge-edge")
+    return p.parent_path().parent_path().filename().string() + "/" + parent + "/" + p.stem().string();
+  return p.stem().string();
+}
+
+void write_json(std::ostream& out, const std::vector<Result>& results) {
+  out << "[\n";
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const Result& r = results[i];
+    out << "  {\"dataset\": \"" << r.dataset << "\", \"kind\": \"" << r.kind << "\", \"method\": \""
+        << r.method << "\", \"queries\": " << r.queries << ", \"mean_ns\": " << r.mean_ns
+        << ", \"median_ns\": " << r.median_ns << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn
+        << ", \"exact_fallbacks\": " << r.exact_fallbacks << ", \"stages\": {\"volume_exclusion\": "
+        << r.stages.volume_exclusion << ", \"interval\": " << r.stages.interval
+        << ", \"integer\": " << r.stages.integer << ", \"exact\": " << r.stages.exact << "}}"
+        << (i + 1 < results.size() ? "," : "") << "\n";
+  }
+  out << "]\n";
+}
+
+}  // namespace
+
+int run_bench(int argc, char** argv) {
+  std::optional<QueryKind> kind;
+  int repetitions = 5;
+  std::vector<Method> methods = {Method::naive, Method::filtered, Method::exact};
+  std::string json;
+  std::vector<std::string> files;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-h" || a == "--help") {
+      std::cout << kHelp;
+      return kExitOk;
+    } else if (a == "--kind") {
+      kind = parse_kind(option_value(argc, argv, i));
+    } else if (a == "--repetitions") {
+      repetitions = std::stoi(option_value(argc, argv, i));
+      if (repetitions < 1) throw UsageError("bench: --repetitions must be >= 1");
+    } else if (a == "--methods") {
+      methods = parse_methods(option_value(argc, argv, i));
+    } else if (a == "--json") {
+      json = option_value(argc, argv, i);
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError("bench: unknown option '" + a + "' (see exactccd bench --help)");
+    } else {
+      files.push_back(a);
+    }
+  }
+  if (files.empty()) files = bundled_files();
+  if (files.empty()) throw UsageError("bench: no dataset given and no bundled dataset found");
+
+  std::vector<Dataset> datasets;
+  for (const std::string& f : files) {
+    datasets.push_back(load_dataset(f, kind));
+    datasets.back().name = dataset_name(f);
+  }
+
+  FILE* table = json == "-" ? stderr : stdout;
+  std::fprintf(table, "%-34s %4s %-9s %8s %10s %10s %6s %6s %9s  %s\n", "dataset", "kind", "method",
+               "queries", "mean_ns", "median_ns", "FP", "FN", "exact_fb", "stages (vol/int/integer/exact)");
+  std::vector<Result> results;
+  for (const Dataset& d : datasets) {
+    const std::size_t n = d.queries.size();
+    // The reference: the exact answer (not the file's truth column, which may be wrong).
+    std::vector<bool> reference(n);
+    for (std::size_t i = 0; i < n; ++i)
+      reference[i] = run_query(d, i, Method::exact, nullptr, false).has_value();
+    std::vector<std::vector<double>> per_query_ns(methods.size());
+    std::vector<Result> rows(methods.size());
+    for (int rep = 0; rep < repetitions; ++rep) {
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        StageCounters counters;
+        std::vector<bool> answer(n);
+        const double start = now_seconds();
+        for (std::size_t i = 0; i < n; ++i)
+          answer[i] = run_query(d, i, methods[m], &counters, false).has_value();
+        const double elapsed = now_seconds() - start;
+        per_query_ns[m].push_back(n ? 1e9 * elapsed / n : 0);
+        if (rep == 0) {
+          Result& r = rows[m];
+          r.dataset = d.name;
+          r.kind = kind_name(d.kind);
+          r.method = method_name(methods[m]);
+          r.queries = n;
+          for (std::size_t i = 0; i < n; ++i) {
+            r.fp += answer[i] && !reference[i];
+            r.fn += !answer[i] && reference[i];
+          }
+          r.stages = counters;
+          r.exact_fallbacks = methods[m] == Method::exact ? n : methods[m] == Method::filtered ? counters.exact : 0;
+        }
+      }
+    }
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      Result& r = rows[m];
+      double sum = 0;
+      for (double x : per_query_ns[m]) sum += x;
+      r.mean_ns = sum / per_query_ns[m].size();
+      r.median_ns = median(per_query_ns[m]);
+      std::string stages = "-";
+      if (methods[m] == Method::filtered && n) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.2f%% / %.3f%%",
+                      100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.interval / n,
+                      100.0 * r.stages.integer / n, 100.0 * r.stages.exact / n);
+        stages = buf;
+      }
+      std::fprintf(table, "%-34s %4s %-9s %8zu %10.1f %10.1f %6zu %6zu %9llu  %s\n", r.dataset.c_str(),
+                   r.kind.c_str(), r.method.c_str(), r.queries, r.mean_ns, r.median_ns, r.fp, r.fn,
+                   static_cast<unsigned long long>(r.exact_fallbacks), stages.c_str());
+      results.push_back(r);
+    }
+  }
+  if (!json.empty()) {
+    if (json == "-") {
+      write_json(std::cout, results);
+    } else {
+      std::ofstream out(json);
+      if (!out) throw UsageError("bench: cannot write '" + json + "'");
+      write_json(out, results);
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace exactccd::cli
