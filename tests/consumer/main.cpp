@@ -1,0 +1,14 @@
+// Uses the installed package: exits 0 only if the answers are right.
+#include <exactccd/exactccd.h>
+#include <exactccd/exactccd.hpp>
+
+int main() {
+  const exactccd::VertexFaceQuery q{{0.25, 0.25, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                    {0.25, 0.25, -1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const auto toi = exactccd::vertex_face_toi(q);
+  if (!toi || toi->lo != 0.5 || toi->hi != 0.5) return 1;
+  const double flat[24] = {2, 2, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 2, -1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+  int collides = -1;
+  if (exactccd_vertex_face_ccd(flat, &collides) != EXACTCCD_OK || collides != 0) return 2;
+  return 0;
+}
