@@ -1,4 +1,5 @@
 // exactccd check: the oracle on benchmark CSV files.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <vector>
@@ -20,10 +21,10 @@ options:
                       doubles; NOT robust)
   --answers           print only one line per query, 0 or 1, in file order
   --stats             also print how many queries each stage of the filtered method decided
-  -h, --help          this help
+%s  -h, --help          this help
 
 output: per file, queries, truth positives, false positives, false negatives and the mean time
-per query; then the totals.
+per query (wall-clock time / queries, so with --threads it is the throughput); then the totals.
 exit codes: 0 ran (whatever it found), 2 bad usage or malformed input (file:line on stderr),
 1 internal error.
 )";
@@ -39,12 +40,15 @@ int run_check(int argc, char** argv) {
   std::optional<QueryKind> kind;
   Method method = Method::filtered;
   bool answers = false, stats = false;
+  BatchOptions batch;
   std::vector<std::string> files;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "-h" || a == "--help") {
-      std::cout << kHelp;
+      std::printf(kHelp, kBatchOptionsHelp);
       return kExitOk;
+    } else if (batch.parse(argc, argv, i)) {
+      continue;
     } else if (a == "--kind") {
       kind = parse_kind(option_value(argc, argv, i));
     } else if (a == "--method") {
@@ -65,36 +69,50 @@ int run_check(int argc, char** argv) {
   std::vector<Dataset> datasets;
   for (const std::string& f : files) datasets.push_back(load_dataset(f, kind));
 
+  std::size_t all_queries = 0;
+  for (const Dataset& d : datasets) all_queries += d.queries.size();
+  const auto [shard_begin, shard_end] = batch.shard_range(all_queries);
+
   Totals total;
   if (!answers)
     std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP",
                 "FN", "us/query");
+  std::size_t offset = 0;  // global index of the dataset's first query
   for (const Dataset& d : datasets) {
-    StageCounters counters;
-    std::vector<bool> result(d.queries.size());
+    const std::size_t n = d.queries.size();
+    const std::size_t begin = std::clamp(shard_begin, offset, offset + n) - offset;
+    const std::size_t end = std::clamp(shard_end, offset, offset + n) - offset;
+    offset += n;
+    if (begin == end) continue;
+    std::vector<StageCounters> counters(end - begin);  // one per query: no shared counter
+    std::vector<char> result(end - begin);
     const double start = now_seconds();
-    for (std::size_t i = 0; i < d.queries.size(); ++i)
-      result[i] = run_query(d, i, method, &counters, false).has_value();
+    parallel_for(begin, end, batch.threads, [&](std::size_t i) {
+      result[i - begin] = run_query(d, i, method, &counters[i - begin], false).has_value();
+    }, "check");
     const double seconds = now_seconds() - start;
+    StageCounters stages;
+    for (const StageCounters& c : counters) stages += c;
     Totals t;
-    t.queries = d.queries.size();
+    t.queries = end - begin;
     t.seconds = seconds;
-    for (std::size_t i = 0; i < t.queries; ++i) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const bool r = result[i - begin];
       t.positives += d.queries.truth[i];
-      t.fp += result[i] && !d.queries.truth[i];
-      t.fn += !result[i] && d.queries.truth[i];
+      t.fp += r && !d.queries.truth[i];
+      t.fn += !r && d.queries.truth[i];
     }
     if (answers) {
-      for (bool r : result) std::fputs(r ? "1\n" : "0\n", stdout);
+      for (char r : result) std::fputs(r ? "1\n" : "0\n", stdout);
     } else {
       std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", d.name.c_str(), kind_name(d.kind).c_str(),
                   t.queries, t.positives, t.fp, t.fn, t.queries ? 1e6 * seconds / t.queries : 0.0);
       if (stats && method == Method::filtered)
         std::printf("  stages: volume_exclusion %llu, interval %llu, integer %llu, exact %llu\n",
-                    static_cast<unsigned long long>(counters.volume_exclusion),
-                    static_cast<unsigned long long>(counters.interval),
-                    static_cast<unsigned long long>(counters.integer),
-                    static_cast<unsigned long long>(counters.exact));
+                    static_cast<unsigned long long>(stages.volume_exclusion),
+                    static_cast<unsigned long long>(stages.interval),
+                    static_cast<unsigned long long>(stages.integer),
+                    static_cast<unsigned long long>(stages.exact));
     }
     total.queries += t.queries;
     total.positives += t.positives;

@@ -1,6 +1,13 @@
 #include "cli_common.hpp"
 
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <exception>
 #include <fstream>
+#include <mutex>
+#include <thread>
 
 namespace exactccd::cli {
 
@@ -89,6 +96,92 @@ std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method me
   }
   const auto q = from_rows<EdgeEdgeQuery>(rows);
   return want_toi ? edge_edge_toi(q, method, c) : collides_placeholder(edge_edge_ccd(q, method, c));
+}
+
+bool BatchOptions::parse(int argc, char** argv, int& i) {
+  const std::string a = argv[i];
+  if (a == "--threads") {
+    const std::string v = option_value(argc, argv, i);
+    try {
+      const int n = std::stoi(v);
+      if (n < 1) throw std::invalid_argument(v);
+      threads = static_cast<unsigned>(n);
+    } catch (const std::exception&) {
+      throw UsageError("--threads needs a positive integer, not '" + v + "'");
+    }
+    return true;
+  }
+  if (a == "--shard") {
+    const std::string v = option_value(argc, argv, i);
+    const auto slash = v.find('/');
+    try {
+      if (slash == std::string::npos) throw std::invalid_argument(v);
+      const long index = std::stol(v.substr(0, slash)), count = std::stol(v.substr(slash + 1));
+      if (count < 1 || index < 0 || index >= count) throw std::invalid_argument(v);
+      shard_index = static_cast<std::size_t>(index);
+      shard_count = static_cast<std::size_t>(count);
+    } catch (const std::exception&) {
+      throw UsageError("--shard needs I/N with 0 <= I < N, not '" + v + "'");
+    }
+    return true;
+  }
+  return false;
+}
+
+std::pair<std::size_t, std::size_t> BatchOptions::shard_range(std::size_t total) const {
+  return {total * shard_index / shard_count, total * (shard_index + 1) / shard_count};
+}
+
+void parallel_for(std::size_t begin, std::size_t end, unsigned threads,
+                  const std::function<void(std::size_t)>& task, const char* label) {
+  std::atomic<std::size_t> next{begin}, done{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto run_one = [&](std::size_t i) {
+    try {
+      task(i);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = end;  // stop handing out work
+    }
+    done.fetch_add(1);
+  };
+  const auto worker = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < end;) run_one(i);
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  // The calling thread works too, and draws the progress bar between queries.
+  const bool tty = isatty(fileno(stderr)) != 0;
+  const double start = now_seconds();
+  double last_draw = start;
+  bool drawn = false;
+  const std::size_t total = end > begin ? end - begin : 0;
+  const auto draw = [&](std::size_t finished) {
+    constexpr int kWidth = 40;
+    const int filled = total ? static_cast<int>(kWidth * finished / total) : kWidth;
+    std::fprintf(stderr, "\r%s [%s%s] %zu/%zu", label, std::string(filled, '=').c_str(),
+                 std::string(kWidth - filled, ' ').c_str(), finished, total);
+    std::fflush(stderr);
+    drawn = true;
+  };
+  for (std::size_t i; (i = next.fetch_add(1)) < end;) {
+    run_one(i);
+    if (tty) {
+      const double now = now_seconds();
+      if (now - start > 2.0 && now - last_draw > 0.2) {
+        draw(done.load());
+        last_draw = now;
+      }
+    }
+  }
+  for (auto& t : pool) t.join();
+  if (drawn) {
+    draw(done.load());
+    std::fputc('\n', stderr);
+  }
+  if (failure) std::rethrow_exception(failure);
 }
 
 std::string option_value(int argc, char** argv, int& i) {

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
+#include <utility>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -64,5 +66,30 @@ inline double now_seconds() {
 
 /// Value of option `--name VALUE` at argv[i] (advances i), or UsageError when missing.
 std::string option_value(int argc, char** argv, int& i);
+
+/// Options shared by batch commands: `--threads N` and `--shard I/N`.
+struct BatchOptions {
+  unsigned threads = 1;
+  std::size_t shard_index = 0, shard_count = 1;
+
+  /// Consumes argv[i] (and its value) when it is a batch option; returns whether it was.
+  bool parse(int argc, char** argv, int& i);
+
+  /// The half-open range of the global query indices [0, total) this shard owns: contiguous
+  /// blocks, so that concatenating the outputs of shards 0..N-1 gives the whole run's output.
+  std::pair<std::size_t, std::size_t> shard_range(std::size_t total) const;
+};
+
+/// Help text of the batch options.
+constexpr const char* kBatchOptionsHelp =
+    "  --threads N         answer queries on N threads (results identical to one thread)\n"
+    "  --shard I/N         only the I-th of N contiguous blocks of all queries (0 <= I < N), for\n"
+    "                      splitting a run across cluster jobs; concatenating the outputs of\n"
+    "                      shards 0..N-1 gives the output of the whole run\n";
+
+/// Runs task(i) for i in [begin, end) on `threads` threads; shows a progress bar on stderr when
+/// stderr is a terminal and the run takes more than two seconds. Exceptions are rethrown.
+void parallel_for(std::size_t begin, std::size_t end, unsigned threads,
+                  const std::function<void(std::size_t)>& task, const char* label);
 
 }  // namespace exactccd::cli
