@@ -18,6 +18,7 @@ struct Subcommand {
 constexpr Subcommand kSubcommands[] = {
     {"check", exactccd::cli::run_check, "answer benchmark CSV queries and compare with their truth"},
     {"bench", exactccd::cli::run_bench, "time every method on the same queries; FP/FN; filter stages"},
+    {"generate", exactccd::cli::run_generate, "write the project's query sets (degenerate catalogue)"},
 };
 
 void print_help() {
