@@ -1,27 +1,89 @@
 // The contact rule: "are the primitives in contact at time t?" as a Boolean formula over the
 // signs of the polynomials of contact_polynomials.hpp. Written once; every method evaluates
-// it with its own sign oracle (exact signs at algebraic roots, certified interval signs that
-// give up when uncertain, ...). The proof that the formula is the contract is in
-// docs/design.md.
+// it with its own sign oracle (exact signs at algebraic roots, certified interval signs, ...).
+// The proof that the formula is the contract is in docs/design.md.
 //
 // A sign oracle is a callable `int sign(const Poly<NT, D>&)` returning -1, 0 or +1 for the
-// polynomial's value at the time being examined. An oracle that cannot certify a sign may
-// throw; the rule has no state, so the caller can retry the query with a stronger oracle.
+// polynomial's value at the time being examined, or kUnknownSign when it cannot certify the
+// sign. The rule then evaluates in three-valued logic (as CGAL's Uncertain<bool>): a
+// conjunction is false as soon as one operand is certainly false, a disjunction true as soon as
+// one is certainly true, whatever the unknown operands; only otherwise is the result unknown.
+// Exact oracles never answer kUnknownSign, and then the rule is plain Boolean logic.
 #pragma once
 
 #include "contact/contact_polynomials.hpp"
 
 namespace exactccd::contact {
 
-/// True iff the point lies on the closed segment (see PointOnSegmentPolys).
-template <class NT, class SignOracle>
-bool point_on_segment(const PointOnSegmentPolys<NT>& s, SignOracle&& sign) {
-  return sign(s.cross.x) == 0 && sign(s.cross.y) == 0 && sign(s.cross.z) == 0 && sign(s.dot) >= 0;
+/// The oracle's answer when a sign is not certain.
+constexpr int kUnknownSign = 2;
+
+/// A three-valued truth value.
+enum class Truth { no, yes, unknown };
+
+inline Truth truth(bool b) { return b ? Truth::yes : Truth::no; }
+
+/// "The sign s is zero" in three-valued logic.
+inline Truth is_zero_sign(int s) { return s == kUnknownSign ? Truth::unknown : truth(s == 0); }
+
+/// "The sign s is >= 0" in three-valued logic.
+inline Truth is_nonnegative_sign(int s) { return s == kUnknownSign ? Truth::unknown : truth(s >= 0); }
+
+/// Conjunction of lazily evaluated operands (callables returning Truth), left to right: stops
+/// at the first certain `no`.
+template <class... Fs>
+Truth all_of(Fs&&... operands) {
+  bool unknown = false;
+  const auto stop = [&](auto&& f) {  // true: a certain `no` decides
+    const Truth t = f();
+    unknown = unknown || t == Truth::unknown;
+    return t == Truth::no;
+  };
+  if ((stop(operands) || ...)) return Truth::no;
+  return unknown ? Truth::unknown : Truth::yes;
 }
 
+/// Disjunction of lazily evaluated operands, left to right: stops at the first certain `yes`.
+template <class... Fs>
+Truth any_of(Fs&&... operands) {
+  bool unknown = false;
+  const auto stop = [&](auto&& f) {  // true: a certain `yes` decides
+    const Truth t = f();
+    unknown = unknown || t == Truth::unknown;
+    return t == Truth::yes;
+  };
+  if ((stop(operands) || ...)) return Truth::yes;
+  return unknown ? Truth::unknown : Truth::no;
+}
+
+/// The point lies on the closed segment (see PointOnSegmentPolys).
 template <class NT, class SignOracle>
-bool is_nonzero(const PolyVec3<NT, 2>& v, SignOracle&& sign) {
-  return sign(v.x) != 0 || sign(v.y) != 0 || sign(v.z) != 0;
+Truth point_on_segment(const PointOnSegmentPolys<NT>& s, SignOracle&& sign) {
+  return all_of([&] { return is_zero_sign(sign(s.cross.x)); },
+                [&] { return is_zero_sign(sign(s.cross.y)); },
+                [&] { return is_zero_sign(sign(s.cross.z)); },
+                [&] { return is_nonnegative_sign(sign(s.dot)); });
+}
+
+/// The vector polynomial is nonzero at the time examined.
+template <class NT, class SignOracle>
+Truth is_nonzero(const PolyVec3<NT, 2>& v, SignOracle&& sign) {
+  const auto nonzero = [&](const Poly<NT, 2>& p) {
+    const int s = sign(p);
+    return s == kUnknownSign ? Truth::unknown : truth(s != 0);
+  };
+  return any_of([&] { return nonzero(v.x); }, [&] { return nonzero(v.y); },
+                [&] { return nonzero(v.z); });
+}
+
+/// Chooses between the answers of a case split on `condition`; when the condition is unknown
+/// both branches are evaluated and the answer is certain only if they agree.
+template <class Then, class Else>
+Truth branch(Truth condition, Then&& if_yes, Else&& if_no) {
+  if (condition == Truth::yes) return if_yes();
+  if (condition == Truth::no) return if_no();
+  const Truth a = if_yes();
+  return a == Truth::unknown || a != if_no() ? Truth::unknown : a;
 }
 
 /// Vertex-face contact at a time where the volume V vanishes (p is in the triangle's plane,
@@ -31,12 +93,19 @@ bool is_nonzero(const PolyVec3<NT, 2>& v, SignOracle&& sign) {
 /// - degenerate triangle (n == 0: a, b, c collinear or coincident): the hull is the union of
 ///   the three closed segments ab, bc, ca.
 template <class NT, class SignOracle>
-bool vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
-  if (is_nonzero(P.normal(), sign))
-    return sign(P.barycentric(0)) >= 0 && sign(P.barycentric(1)) >= 0 &&
-           sign(P.barycentric(2)) >= 0;
-  return point_on_segment(P.on_edge(0), sign) || point_on_segment(P.on_edge(1), sign) ||
-         point_on_segment(P.on_edge(2), sign);
+Truth vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
+  return branch(
+      is_nonzero(P.normal(), sign),
+      [&] {
+        return all_of([&] { return is_nonnegative_sign(sign(P.barycentric(0))); },
+                      [&] { return is_nonnegative_sign(sign(P.barycentric(1))); },
+                      [&] { return is_nonnegative_sign(sign(P.barycentric(2))); });
+      },
+      [&] {
+        return any_of([&] { return point_on_segment(P.on_edge(0), sign); },
+                      [&] { return point_on_segment(P.on_edge(1), sign); },
+                      [&] { return point_on_segment(P.on_edge(2), sign); });
+      });
 }
 
 /// Edge-edge contact at a time where the volume V vanishes (the edges are coplanar):
@@ -45,31 +114,39 @@ bool vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sig
 /// - parallel, collinear or zero-length (w == 0): the segments meet iff an endpoint of one lies
 ///   on the other (the intersection of two collinear segments is bounded by such endpoints).
 template <class NT, class SignOracle>
-bool edge_edge_in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
-  if (is_nonzero(P.direction_cross(), sign))
-    return sign(P.parameter(0)) >= 0 && sign(P.parameter(1)) >= 0 &&
-           sign(P.parameter(2)) >= 0 && sign(P.parameter(3)) >= 0;
-  return point_on_segment(P.endpoint_on_edge(0), sign) ||
-         point_on_segment(P.endpoint_on_edge(1), sign) ||
-         point_on_segment(P.endpoint_on_edge(2), sign) ||
-         point_on_segment(P.endpoint_on_edge(3), sign);
+Truth edge_edge_in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
+  return branch(
+      is_nonzero(P.direction_cross(), sign),
+      [&] {
+        return all_of([&] { return is_nonnegative_sign(sign(P.parameter(0))); },
+                      [&] { return is_nonnegative_sign(sign(P.parameter(1))); },
+                      [&] { return is_nonnegative_sign(sign(P.parameter(2))); },
+                      [&] { return is_nonnegative_sign(sign(P.parameter(3))); });
+      },
+      [&] {
+        return any_of([&] { return point_on_segment(P.endpoint_on_edge(0), sign); },
+                      [&] { return point_on_segment(P.endpoint_on_edge(1), sign); },
+                      [&] { return point_on_segment(P.endpoint_on_edge(2), sign); },
+                      [&] { return point_on_segment(P.endpoint_on_edge(3), sign); });
+      });
 }
 
 /// The in-plane part of the contact rule, chosen by overload.
 template <class NT, class SignOracle>
-bool in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
+Truth in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
   return vertex_face_in_plane_contact(P, sign);
 }
 template <class NT, class SignOracle>
-bool in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
+Truth in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
   return edge_edge_in_plane_contact(P, sign);
 }
 
 /// The whole contact rule at one time: the volume vanishes (the four points are coplanar)
 /// and the in-plane rule holds.
 template <class Polys, class SignOracle>
-bool in_contact(const Polys& P, SignOracle&& sign) {
-  return sign(P.volume()) == 0 && in_plane_contact(P, sign);
+Truth in_contact(const Polys& P, SignOracle&& sign) {
+  return all_of([&] { return is_zero_sign(sign(P.volume())); },
+                [&] { return in_plane_contact(P, sign); });
 }
 
 }  // namespace exactccd::contact

@@ -85,7 +85,7 @@ std::optional<Root> earliest_contact(const Polys& P) {
       if (contact::is_zero(p)) return 0;
       return static_cast<int>(sign_at(integer_poly(p), t));
     };
-    if (contact::in_contact(P, sign)) return t;
+    if (contact::in_contact(P, sign) == contact::Truth::yes) return t;  // exact: never unknown
   }
   return std::nullopt;
 }

@@ -161,7 +161,7 @@ StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
 
   std::optional<TimeInterval> best;
   for (Candidate& c : candidates) {
-    if (!contact::in_plane_contact(P, RootSignOracle{c})) continue;
+    if (contact::in_plane_contact(P, RootSignOracle{c}) != contact::Truth::yes) continue;  // exact
     if (!want_toi) return {Verdict::collision, std::nullopt};
     const TimeInterval t = enclose(c);
     if (!best || earlier(t, *best)) best = t;

@@ -38,9 +38,6 @@ namespace {
 using Interval = CGAL::Interval_nt<false>;  // requires the rounding mode set by the caller
 using Bernstein = std::array<Interval, 4>;
 
-/// Thrown by the sign oracle when a sign is not certain; caught within this file.
-struct UncertainSign {};
-
 constexpr int kMaxSubdivisionDepth = 30;  // cells of width 2^-30; closer roots go to exact
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -173,7 +170,7 @@ Narrowing narrow(const contact::Poly<Interval, 3>& v, RootCell& cell, int max_st
                                                                          : Narrowing::partial;
 }
 
-/// Sign oracle over a time interval: certain signs or UncertainSign.
+/// Sign oracle over a time interval: certain signs, or kUnknownSign.
 struct IntervalSignOracle {
   Interval t;
   template <int D>
@@ -182,7 +179,7 @@ struct IntervalSignOracle {
     const int s = certain_sign(value);
     if (s != 0) return s;
     if (value.inf() == 0 && value.sup() == 0) return 0;  // p vanishes identically on t
-    throw UncertainSign{};
+    return contact::kUnknownSign;
   }
 };
 
@@ -193,16 +190,13 @@ enum class CellVerdict { contact, no_contact, uncertain };
 template <class Polys>
 CellVerdict in_plane_verdict(const Polys& P, RootCell& cell) {
   for (int attempt = 0; attempt < 3; ++attempt) {
-    try {
-      return contact::in_plane_contact(P, IntervalSignOracle{Interval(cell.lo, cell.hi)})
-                 ? CellVerdict::contact
-                 : CellVerdict::no_contact;
-    } catch (const UncertainSign&) {
-      if (cell.is_point()) return CellVerdict::uncertain;
-      const RootCell before = cell;
-      narrow(P.volume(), cell, attempt == 0 ? 16 : 1100);
-      if (cell.lo == before.lo && cell.hi == before.hi) return CellVerdict::uncertain;
-    }
+    const contact::Truth t = contact::in_plane_contact(P, IntervalSignOracle{Interval(cell.lo, cell.hi)});
+    if (t == contact::Truth::yes) return CellVerdict::contact;
+    if (t == contact::Truth::no) return CellVerdict::no_contact;
+    if (cell.is_point()) return CellVerdict::uncertain;
+    const RootCell before = cell;
+    narrow(P.volume(), cell, attempt == 0 ? 16 : 1100);
+    if (cell.lo == before.lo && cell.hi == before.hi) return CellVerdict::uncertain;
   }
   return CellVerdict::uncertain;
 }

@@ -7,6 +7,8 @@
 
 #include "cli_common.hpp"
 #include "fuzz/catalogue.hpp"
+#include "scene/procedural_scenes.hpp"
+#include "scene/sim_queries.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -15,16 +17,28 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHelp = R"(usage: exactccd generate catalogue --out DIR
+       exactccd generate sim --scene cloth|strip|fold [--resolution N] [--seed S]
+                             [--max-queries M] --out DIR
 
 Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).
 
   catalogue   the hand-derived degenerate catalogue (fuzz/catalogue.cpp) with its scaled and
               translated copies: DIR/catalogue-vertex-face.csv and DIR/catalogue-edge-edge.csv;
               the truth column is the hand-derived answer
+  sim         simulation-like queries: the broad-phase candidates of one time step of a
+              procedural scene (lib/scene/procedural_scenes.hpp), written to
+              DIR/sim-<scene>-vertex-face.csv and DIR/sim-<scene>-edge-edge.csv; the truth
+              column is the exact answer (filtered method, which is exact)
 
 options:
-  --out DIR    output directory (created if missing)
-  -h, --help   this help
+  --out DIR           output directory (created if missing)
+  --scene NAME        cloth (cloth draped over a sphere), strip (tightening helical ribbon),
+                      fold (sheet folding onto itself)
+  --resolution N      scene resolution (default 24)
+  --seed S            random seed of the scene's noise (default 1); same seed, same file
+  --max-queries M     keep at most M evenly spaced queries per file, in candidate order
+                      (default 1000; 0 = all): the step's natural share of collisions
+  -h, --help          this help
 exit codes: 0 written, 2 bad usage or unwritable output, 1 internal error.
 )";
 
@@ -53,10 +67,32 @@ void write_atomically(const fs::path& path, const io::BenchmarkQueries& q) {
   std::printf("%s: %zu queries, %zu positives\n", path.string().c_str(), q.size(), positives);
 }
 
+/// Exact answers of double queries, keeping at most max_queries (0: all) evenly spaced ones in
+/// candidate order, so that the kept set has the step's natural share of collisions.
+template <class Query, class Collides>
+io::BenchmarkQueries subsample(const std::vector<Query>& queries, std::size_t max_queries,
+                               Collides&& collides) {
+  const std::size_t n = queries.size();
+  const std::size_t keep = max_queries == 0 ? n : std::min(n, max_queries);
+  io::BenchmarkQueries out;
+  for (std::size_t k = 0; k < keep; ++k) {
+    const std::size_t i = k * n / keep;  // evenly spaced, increasing, distinct
+    std::array<RationalVec3, 8> r;
+    const auto d = rows(queries[i]);
+    for (int j = 0; j < 8; ++j) r[j] = {mpq_class(d[j].x), mpq_class(d[j].y), mpq_class(d[j].z)};
+    out.rows.push_back(r);
+    out.truth.push_back(collides(queries[i]));
+  }
+  return out;
+}
+
 }  // namespace
 
 int run_generate(int argc, char** argv) {
-  std::string what, out;
+  std::string what, out, scene_name;
+  int resolution = 24;
+  std::uint64_t seed = 1;
+  std::size_t max_queries = 1000;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "-h" || a == "--help") {
@@ -64,6 +100,14 @@ int run_generate(int argc, char** argv) {
       return kExitOk;
     } else if (a == "--out") {
       out = option_value(argc, argv, i);
+    } else if (a == "--scene") {
+      scene_name = option_value(argc, argv, i);
+    } else if (a == "--resolution") {
+      resolution = std::stoi(option_value(argc, argv, i));
+    } else if (a == "--seed") {
+      seed = std::stoull(option_value(argc, argv, i));
+    } else if (a == "--max-queries") {
+      max_queries = std::stoul(option_value(argc, argv, i));
     } else if (!a.empty() && a[0] == '-') {
       throw UsageError("generate: unknown option '" + a + "' (see exactccd generate --help)");
     } else if (what.empty()) {
@@ -72,11 +116,31 @@ int run_generate(int argc, char** argv) {
       throw UsageError("generate: unexpected argument '" + a + "'");
     }
   }
-  if (what != "catalogue") throw UsageError("generate: expected 'catalogue' (see exactccd generate --help)");
+  if (what != "catalogue" && what != "sim")
+    throw UsageError("generate: expected 'catalogue' or 'sim' (see exactccd generate --help)");
   if (out.empty()) throw UsageError("generate: --out DIR is required");
+  if (what == "catalogue") {
+    fs::create_directories(out);
+    write_atomically(fs::path(out) / "catalogue-vertex-face.csv", to_benchmark(catalogue::vertex_face_cases()));
+    write_atomically(fs::path(out) / "catalogue-edge-edge.csv", to_benchmark(catalogue::edge_edge_cases()));
+    return kExitOk;
+  }
+  if (scene_name.empty()) throw UsageError("generate sim: --scene cloth|strip|fold is required");
+  scene::MovingMesh mesh;
+  try {
+    mesh = scene::procedural_scene(scene_name, resolution, seed);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("generate sim: ") + e.what());
+  }
+  const scene::StepQueries q = scene::step_queries(mesh);
+  std::fprintf(stderr, "scene %s: %zu vertices, %zu triangles, %zu VF and %zu EE candidates\n",
+               scene_name.c_str(), mesh.positions_t0.size(), mesh.triangles.size(), q.vertex_face.size(),
+               q.edge_edge.size());
+  const auto vf = subsample(q.vertex_face, max_queries, [](const VertexFaceQuery& x) { return vertex_face_ccd(x); });
+  const auto ee = subsample(q.edge_edge, max_queries, [](const EdgeEdgeQuery& x) { return edge_edge_ccd(x); });
   fs::create_directories(out);
-  write_atomically(fs::path(out) / "catalogue-vertex-face.csv", to_benchmark(catalogue::vertex_face_cases()));
-  write_atomically(fs::path(out) / "catalogue-edge-edge.csv", to_benchmark(catalogue::edge_edge_cases()));
+  write_atomically(fs::path(out) / ("sim-" + scene_name + "-vertex-face.csv"), vf);
+  write_atomically(fs::path(out) / ("sim-" + scene_name + "-edge-edge.csv"), ee);
   return kExitOk;
 }
 

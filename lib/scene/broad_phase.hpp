@@ -1,0 +1,37 @@
+// Broad phase over one time step: swept (space-time) axis-aligned boxes and sort-and-sweep.
+//
+// The box of a moving vertex is the box of its two positions; of an edge or triangle, the box
+// of all its vertices' positions at t0 and t1. A linearly moving point stays on the segment
+// between its positions, so every primitive stays in its box for the whole step, and two
+// primitives that touch at some t have overlapping boxes. The bounds are input coordinates
+// themselves (min and max involve no rounding) and overlap is tested with <=, so the test is
+// exact: no margin is needed and no touching pair is dropped.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "scene/mesh.hpp"
+
+namespace exactccd::scene {
+
+/// An axis-aligned box [lo, hi] (closed).
+struct Box {
+  std::array<double, 3> lo, hi;
+};
+
+/// Candidate pairs of one step: (vertex, triangle) and (edge, edge) by index into the mesh's
+/// vertices, triangles and unique_edges(). Pairs sharing a vertex are excluded (a vertex
+/// against its own triangles, edges with a common endpoint). Sorted, without duplicates.
+struct Candidates {
+  std::vector<std::array<int, 2>> vertex_face;  ///< {vertex, triangle}
+  std::vector<std::array<int, 2>> edge_edge;    ///< {edge i, edge j}, i < j
+};
+
+/// The swept box of a set of vertices of the mesh.
+Box swept_box(const MovingMesh& mesh, const int* vertices, int count);
+
+/// All candidate pairs whose swept boxes overlap (sort-and-sweep on x).
+Candidates find_candidates(const MovingMesh& mesh, const std::vector<Edge>& edges);
+
+}  // namespace exactccd::scene
