@@ -595,6 +595,40 @@ class Generator {
     return rows;
   }
 
+  /// A random double in [-1, 1] with a full 53-bit significand.
+  double unit() { return std::ldexp(static_cast<double>(rng_() >> 11), -52) - 1; }
+
+  /// All eight points rounded onto one random plane z = alpha x + beta y + gamma (full-precision
+  /// doubles): the rounding leaves the volume tiny, of any sign, and its roots anywhere, the
+  /// classic stress test of a floating-point orientation filter. Vertex-face: p is a random
+  /// convex combination of the triangle's vertices (inside, or slightly outside) at each time;
+  /// edge-edge: the edges cross in the plane at each time.
+  Rows nearly_coplanar(Kind kind) {
+    const double alpha = unit(), beta = unit(), gamma = unit();
+    const auto on_plane = [&](double x, double y) { return Vec3{x, y, alpha * x + beta * y + gamma}; };
+    Rows r;
+    for (std::size_t base : {std::size_t{0}, std::size_t{4}}) {
+      const Vec3 a = on_plane(unit(), unit()), b = on_plane(unit(), unit()),
+                 c = on_plane(unit(), unit());
+      double l1 = std::fabs(unit()), l2 = std::fabs(unit());
+      if (coin(70) && l1 + l2 > 1) l1 = 1 - l1, l2 = 1 - l2;  // inside, mostly
+      const auto mix = [&](const Vec3& u, const Vec3& v, const Vec3& w) {
+        return on_plane(u.x + l1 * (v.x - u.x) + l2 * (w.x - u.x),
+                        u.y + l1 * (v.y - u.y) + l2 * (w.y - u.y));
+      };
+      if (kind == Kind::vertex_face) {
+        r[base] = mix(a, b, c);
+        r[base + 1] = a, r[base + 2] = b, r[base + 3] = c;
+      } else {
+        // Edge (a, b) and an edge through a point of (a, b) towards c and beyond.
+        const Vec3 m = on_plane(a.x + l1 * (b.x - a.x), a.y + l1 * (b.y - a.y));
+        r[base] = a, r[base + 1] = b, r[base + 2] = c;
+        r[base + 3] = on_plane(2 * m.x - c.x, 2 * m.y - c.y);
+      }
+    }
+    return r;
+  }
+
   /// Coordinates drawn from a set of extreme magnitudes (subnormal, smallest normal, huge,
   /// DBL_MAX): differences and products overflow or underflow in every double stage.
   Rows extreme() {
@@ -654,11 +688,12 @@ class Generator {
       case 3: return in_plane(false);
       case 4: return in_plane(true);
       case 5: return parallel_or_collinear(kind);
-      default: return crossing(kind);
+      case 6: return crossing(kind);
+      default: return nearly_coplanar(kind);
     }
   }
 
-  static constexpr int kBaseFamilies = 7;
+  static constexpr int kBaseFamilies = 8;
 
  private:
   std::mt19937_64 rng_;
@@ -681,6 +716,14 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
       {"crossing at a random time", [](Generator& g, Kind k) { return g.crossing(k); }},
       // Huge exponent ranges make integers of thousands of bits: ~10-50 ms per query on the
       // exact path, hence fewer of them.
+      {"nearly coplanar", [](Generator& g, Kind k) { return g.nearly_coplanar(k); }},
+      {"nearly coplanar, scaled by 2^[-400, 300]",
+       [](Generator& g, Kind k) {
+         Rows r = g.nearly_coplanar(k);
+         const int e = g.integer(-400, 300);
+         for (int i = 0; i < 24; ++i) coordinate(r, i) = std::ldexp(coordinate(r, i), e);
+         return r;
+       }},
       {"extreme magnitudes", [](Generator& g, Kind) { return g.extreme(); }, 25},
       {"nudged by ulps", [](Generator& g, Kind k) { return g.nudged(k); }},
       {"scaled by 2^e", [](Generator& g, Kind k) { return g.scaled(k); }},

@@ -154,26 +154,54 @@ EdgeEdgePolys<NT> polynomials(const EdgeEdgeQueryT<NT>& q) {
   return EdgeEdgePolys<NT>(q);
 }
 
-/// Calls f on every polynomial the contact rule may consult apart from the volume: the
-/// candidate times of a query that is coplanar for all t are the roots of these.
+// The in-plane rule (contact_rule.hpp) branches on one vector polynomial (the normal n, or
+// w = da x db): where it is nonzero it consults the "proper" polynomials (barycentric
+// numerators, segment parameters), where it vanishes the "degenerate" ones (point on segment).
+
+/// The vector polynomial the in-plane rule branches on.
+template <class NT>
+const PolyVec3<NT, 2>& branch_vector(const VertexFacePolys<NT>& P) {
+  return P.normal();
+}
+template <class NT>
+const PolyVec3<NT, 2>& branch_vector(const EdgeEdgePolys<NT>& P) {
+  return P.direction_cross();
+}
+
+/// Calls f on the polynomials of the branch where the branch vector is nonzero.
 template <class NT, class F>
-void for_each_in_plane_poly(const VertexFacePolys<NT>& P, F&& f) {
-  f(P.normal().x), f(P.normal().y), f(P.normal().z);
+void for_each_proper_poly(const VertexFacePolys<NT>& P, F&& f) {
   for (int i = 0; i < 3; ++i) f(P.barycentric(i));
+}
+template <class NT, class F>
+void for_each_proper_poly(const EdgeEdgePolys<NT>& P, F&& f) {
+  for (int i = 0; i < 4; ++i) f(P.parameter(i));
+}
+
+/// Calls f on the polynomials of the branch where the branch vector vanishes.
+template <class NT, class F>
+void for_each_degenerate_poly(const VertexFacePolys<NT>& P, F&& f) {
   for (int i = 0; i < 3; ++i) {
     const auto& s = P.on_edge(i);
     f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);
   }
 }
-
 template <class NT, class F>
-void for_each_in_plane_poly(const EdgeEdgePolys<NT>& P, F&& f) {
-  f(P.direction_cross().x), f(P.direction_cross().y), f(P.direction_cross().z);
-  for (int i = 0; i < 4; ++i) f(P.parameter(i));
+void for_each_degenerate_poly(const EdgeEdgePolys<NT>& P, F&& f) {
   for (int i = 0; i < 4; ++i) {
     const auto& s = P.endpoint_on_edge(i);
     f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);
   }
+}
+
+/// Calls f on every polynomial the contact rule may consult apart from the volume: the
+/// candidate times of a query that is coplanar for all t are the roots of these.
+template <class Polys, class F>
+void for_each_in_plane_poly(const Polys& P, F&& f) {
+  const auto& v = branch_vector(P);
+  f(v.x), f(v.y), f(v.z);
+  for_each_proper_poly(P, f);
+  for_each_degenerate_poly(P, f);
 }
 
 }  // namespace exactccd::contact

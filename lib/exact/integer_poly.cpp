@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -70,26 +71,23 @@ Coefficients bernstein_coefficients(const Coefficients& c, int d) {
   return b;
 }
 
-// Roots of a square-free integer polynomial of degree <= 4 are separated by a positive amount,
-// so the subdivision terminates; this cap only guards against a logic error.
-constexpr unsigned kMaxDepth = 4096;
-
 /// Bernstein subdivision of the cell [a / 2^k, (a + 1) / 2^k] with scaled Bernstein
-/// coefficients b (all positive multiples of the true ones).
-void isolate(const IntegerPoly& p, const Coefficients& b, const mpz_class& a, unsigned k,
-             std::vector<IsolatedRoot>& out) {
+/// coefficients b (all positive multiples of the true ones). False when a cell deeper than
+/// max_depth is still undecided (a multiple root, or roots closer than 2^-max_depth).
+bool isolate(const IntegerPoly& p, const Coefficients& b, const mpz_class& a, unsigned k,
+             unsigned max_depth, std::vector<IsolatedRoot>& out) {
   const int d = p.deg;
   const int changes = sign_variations(b, d);
-  if (changes == 0) return;
+  if (changes == 0) return true;
   if (changes == 1 && sgn(b[0]) != 0 && sgn(b[d]) != 0) {
     IsolatedRoot r;
     r.lo = {a, k};
     r.hi = {a + 1, k};
     r.sign_at_lo = sgn(b[0]);
     out.push_back(std::move(r));
-    return;
+    return true;
   }
-  if (k >= kMaxDepth) throw std::runtime_error("exactccd: root isolation did not terminate");
+  if (k >= max_depth) return false;
   // de Casteljau at the midpoint, both halves scaled by 2^d to stay integral:
   //   left_j = 2^(d-j) sum_{i<=j} C(j,i) b_i,  right_j = 2^j sum_{i>=j} C(d-j,i-j) b_i.
   Coefficients left, right;
@@ -101,14 +99,14 @@ void isolate(const IntegerPoly& p, const Coefficients& b, const mpz_class& a, un
     right[j] = shifted(r, static_cast<unsigned long>(j));
   }
   const mpz_class a2 = 2 * a;
-  isolate(p, left, a2, k + 1, out);
+  if (!isolate(p, left, a2, k + 1, max_depth, out)) return false;
   if (sgn(left[d]) == 0) {  // the midpoint is a root
     IsolatedRoot r;
     r.exact = true;
     r.at = {a2 + 1, k + 1};
     out.push_back(std::move(r));
   }
-  isolate(p, right, a2 + 1, k + 1, out);
+  return isolate(p, right, a2 + 1, k + 1, max_depth, out);
 }
 
 }  // namespace
@@ -199,7 +197,8 @@ IntegerPoly square_free_part(const IntegerPoly& p) {
   return exact_quotient(pp, g);
 }
 
-std::vector<IsolatedRoot> roots_in_unit_interval(const IntegerPoly& p) {
+std::optional<std::vector<IsolatedRoot>> roots_in_unit_interval(const IntegerPoly& p,
+                                                                 unsigned max_depth) {
   std::vector<IsolatedRoot> roots;
   if (p.deg <= 0) return roots;
   const int d = p.deg;
@@ -212,7 +211,7 @@ std::vector<IsolatedRoot> roots_in_unit_interval(const IntegerPoly& p) {
     r.at = {0, 0};
     roots.push_back(std::move(r));
   }
-  isolate(p, bernstein_coefficients(p.c, d), 0, 0, roots);
+  if (!isolate(p, bernstein_coefficients(p.c, d), 0, 0, max_depth, roots)) return std::nullopt;
   if (sgn(at_1) == 0) {
     IsolatedRoot r;
     r.exact = true;
@@ -220,6 +219,19 @@ std::vector<IsolatedRoot> roots_in_unit_interval(const IntegerPoly& p) {
     roots.push_back(std::move(r));
   }
   return roots;
+}
+
+RootsOf isolate_roots(const IntegerPoly& p) {
+  // Most polynomials have simple roots in [0, 1]: isolate them directly (a shallow failure
+  // costs little), and pay for the square-free part only when that does not settle.
+  constexpr unsigned kShallowDepth = 64;
+  if (auto roots = roots_in_unit_interval(p, kShallowDepth)) return {p, std::move(*roots)};
+  IntegerPoly sf = square_free_part(p);
+  // A square-free polynomial of degree <= 4 has simple, separated roots: the subdivision ends.
+  // The cap only guards against a logic error.
+  auto roots = roots_in_unit_interval(sf, 1u << 16);
+  if (!roots) throw std::runtime_error("exactccd: root isolation did not terminate");
+  return {std::move(sf), std::move(*roots)};
 }
 
 int sign_on_cell(const IntegerPoly& q, const Dyadic& lo) {

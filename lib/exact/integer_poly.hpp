@@ -11,6 +11,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace exactccd::exact {
@@ -64,10 +65,20 @@ struct IsolatedRoot {
   int sign_at_lo = 0;
 };
 
-/// The real roots in [0, 1] of a nonzero square-free p, in increasing order (Bernstein
-/// subdivision with exact integer coefficients; Descartes' rule of signs in the Bernstein
-/// basis decides each dyadic cell).
-std::vector<IsolatedRoot> roots_in_unit_interval(const IntegerPoly& p);
+/// The real roots in [0, 1] of a nonzero p, in increasing order (Bernstein subdivision with
+/// exact integer coefficients; Descartes' rule of signs in the Bernstein basis decides each
+/// dyadic cell), or nullopt when a cell deeper than max_depth is undecided (p has a multiple
+/// root there, or roots closer than 2^-max_depth). Every root returned is simple.
+std::optional<std::vector<IsolatedRoot>> roots_in_unit_interval(const IntegerPoly& p,
+                                                                 unsigned max_depth);
+
+/// The roots in [0, 1] of a nonzero polynomial and the polynomial that defines them: p itself
+/// when its roots there are simple, else its square-free part.
+struct RootsOf {
+  IntegerPoly defining;
+  std::vector<IsolatedRoot> roots;
+};
+RootsOf isolate_roots(const IntegerPoly& p);
 
 /// The sign of q on the whole closed cell [lo, lo + 2^-lo.k] when it is constant and nonzero
 /// there (certified by the signs of q's Bernstein coefficients on the cell), otherwise 0.

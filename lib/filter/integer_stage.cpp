@@ -6,11 +6,13 @@
 // decision is unchanged. The polynomials then have integer coefficients and degree <= 4.
 //
 // Candidate times are those of exact_ccd.cpp: the roots in [0, 1] of V when V is not
-// identically zero, else 0, 1 and the roots of every in-plane polynomial. Each root is that
-// of a square-free integer polynomial R, known exactly (a dyadic) or isolated in an open
-// dyadic cell where R changes sign. The sign of another polynomial q at a root r in a cell:
-// - q(r) = 0 iff r is a root of G = gcd(R, q); G divides the square-free R, so its roots are
-//   simple and r is the only root of R in the cell: G(r) = 0 iff G changes sign on the cell;
+// identically zero, else 0, 1 and the roots of the in-plane polynomials the rule can consult.
+// Each root is a simple root of an integer polynomial R (the polynomial itself, or its
+// square-free part), known exactly (a dyadic) or as R's only root in an open dyadic cell where
+// R changes sign. The sign of another polynomial q at a root r in a cell:
+// - q(r) = 0 iff r is a root of G = gcd(R, q); G divides R and r is a simple root of R, so a
+//   root of G at r is simple and G has no other root in the cell: G(r) = 0 iff G changes sign
+//   on the cell;
 // - otherwise the cell is halved (exact signs of R at dyadic midpoints) until q's Bernstein
 //   coefficients on the cell share one strict sign, which then is q's sign at r. This ends
 //   because q(r) != 0 and q is continuous.
@@ -68,7 +70,7 @@ IntegerQuery to_integer_query(const Query& q) {
   return from_rows<IntegerQuery>(out);
 }
 
-/// A candidate time: a root of the square-free polynomial *defining.
+/// A candidate time: a simple root of the polynomial *defining.
 struct Candidate {
   IsolatedRoot root;
   const IntegerPoly* defining = nullptr;  // unused when root.exact
@@ -132,12 +134,14 @@ template <class IntegerQuery>
 StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
   std::deque<IntegerPoly> defining;  // stable addresses for Candidate::defining
   std::vector<Candidate> candidates;
-  const auto add_roots_of = [&](const IntegerPoly& p) {
-    defining.push_back(exact::square_free_part(p));
-    for (IsolatedRoot& r : exact::roots_in_unit_interval(defining.back())) {
+  const auto add_roots_of = [&](const IntegerPoly& p) {  // returns how many roots it added
+    exact::RootsOf found = exact::isolate_roots(p);
+    defining.push_back(std::move(found.defining));
+    for (IsolatedRoot& r : found.roots) {
       exact::refine_with_approximation(defining.back(), r);
       candidates.push_back({std::move(r), &defining.back()});
     }
+    return found.roots.size();
   };
 
   const auto P = contact::polynomials(q);
@@ -153,10 +157,23 @@ StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
       c.root.at = end;
       candidates.push_back(std::move(c));
     }
-    contact::for_each_in_plane_poly(P, [&](const auto& p) {
+    // Only the polynomials the rule can consult somewhere in [0, 1] matter (docs/design.md):
+    // a branch-vector component that is nonzero without a root in [0, 1] keeps the rule in
+    // its proper branch throughout; a branch vector that vanishes identically, in the other.
+    bool vector_nowhere_zero = false, vector_identically_zero = true;
+    const auto& v = contact::branch_vector(P);
+    for (const auto* component : {&v.x, &v.y, &v.z}) {
+      const IntegerPoly ip = integer_poly(*component);
+      if (ip.is_zero()) continue;
+      vector_identically_zero = false;
+      if (add_roots_of(ip) == 0) vector_nowhere_zero = true;
+    }
+    const auto add = [&](const auto& p) {
       const IntegerPoly ip = integer_poly(p);
       if (!ip.is_zero()) add_roots_of(ip);
-    });
+    };
+    if (!vector_identically_zero) contact::for_each_proper_poly(P, add);
+    if (!vector_nowhere_zero) contact::for_each_degenerate_poly(P, add);
   }
 
   std::optional<TimeInterval> best;
