@@ -118,10 +118,13 @@ class EdgeEdgePolys {
   /// U, D - U, W, D - W for i = 0..3: all >= 0 iff alpha = U / D and beta = W / D are in [0, 1].
   const Poly<NT, 4>& parameter(int i) const {
     return cached(parameter_[i], [&] {
-      const auto& w = direction_cross();
-      const auto r = b0_ - a0_;
-      const Poly<NT, 4> numerator = dot(cross(r, i < 2 ? b1_ - b0_ : a1_ - a0_), w);
-      return i % 2 == 0 ? numerator : dot(w, w) - numerator;
+      // U (i < 2) or W (i >= 2), each built once and shared by its pair.
+      const Poly<NT, 4>& numerator = cached(numerator_[i / 2], [&] {
+        return dot(cross(b0_ - a0_, i < 2 ? b1_ - b0_ : a1_ - a0_), direction_cross());
+      });
+      if (i % 2 == 0) return numerator;
+      const Poly<NT, 4>& d = cached(squared_norm_, [&] { return dot(direction_cross(), direction_cross()); });
+      return d - numerator;
     });
   }
   /// a0 on edge b, a1 on edge b, b0 on edge a, b1 on edge a, for i = 0..3.
@@ -140,6 +143,8 @@ class EdgeEdgePolys {
   PolyVec3<NT, 1> a0_, a1_, b0_, b1_;
   mutable std::optional<Poly<NT, 3>> volume_;
   mutable std::optional<PolyVec3<NT, 2>> direction_cross_;
+  mutable std::array<std::optional<Poly<NT, 4>>, 2> numerator_;  // U, W
+  mutable std::optional<Poly<NT, 4>> squared_norm_;               // D = w . w
   mutable std::array<std::optional<Poly<NT, 4>>, 4> parameter_;
   mutable std::array<std::optional<PointOnSegmentPolys<NT>>, 4> endpoint_on_edge_;
 };
