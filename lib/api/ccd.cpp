@@ -26,12 +26,21 @@ std::optional<TimeInterval> point_interval(std::optional<double> t) {
   return TimeInterval{*t, *t};
 }
 
+baseline::NaiveVariant naive_variant(Method m) {
+  switch (m) {
+    case Method::naive_tolerance: return baseline::NaiveVariant::tolerance;
+    case Method::naive_mpfr24: return baseline::NaiveVariant::mpfr24;
+    case Method::naive_mpfr53: return baseline::NaiveVariant::mpfr53;
+    case Method::naive_mpfr113: return baseline::NaiveVariant::mpfr113;
+    case Method::naive_mpfr256: return baseline::NaiveVariant::mpfr256;
+    default: return baseline::NaiveVariant::plain;
+  }
+}
+
 std::optional<TimeInterval> toi(const VertexFaceQuery& q, Method method, bool want_toi,
                                 StageCounters* counters) {
   require_finite(q, want_toi ? "vertex_face_toi" : "vertex_face_ccd");
   switch (method) {
-    case Method::naive:
-      return point_interval(baseline::naive_vertex_face_toi(q));
     case Method::exact:
       if (!want_toi)
         return exact::vertex_face_ccd(exact::to_rational(q)) ? std::optional(TimeInterval{})
@@ -39,6 +48,8 @@ std::optional<TimeInterval> toi(const VertexFaceQuery& q, Method method, bool wa
       return exact::vertex_face_toi(exact::to_rational(q));
     case Method::filtered:
       break;
+    default:
+      return point_interval(baseline::naive_vertex_face_toi(q, naive_variant(method)));
   }
   return want_toi ? filter::vertex_face_toi(q, counters)
                   : (filter::vertex_face_ccd(q, counters) ? std::optional(TimeInterval{})
@@ -49,8 +60,6 @@ std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, bool want
                                 StageCounters* counters) {
   require_finite(q, want_toi ? "edge_edge_toi" : "edge_edge_ccd");
   switch (method) {
-    case Method::naive:
-      return point_interval(baseline::naive_edge_edge_toi(q));
     case Method::exact:
       if (!want_toi)
         return exact::edge_edge_ccd(exact::to_rational(q)) ? std::optional(TimeInterval{})
@@ -58,6 +67,8 @@ std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, bool want
       return exact::edge_edge_toi(exact::to_rational(q));
     case Method::filtered:
       break;
+    default:
+      return point_interval(baseline::naive_edge_edge_toi(q, naive_variant(method)));
   }
   return want_toi ? filter::edge_edge_toi(q, counters)
                   : (filter::edge_edge_ccd(q, counters) ? std::optional(TimeInterval{})

@@ -32,7 +32,8 @@ mean_ns and median_ns are the mean and median of that figure over the repetition
 options:
   --kind vf|ee         query kind of the files (default: inferred from the path)
   --repetitions N      repetitions per dataset and method (default 5)
-  --methods LIST       comma-separated subset of naive,filtered,exact (default: all three)
+  --methods LIST       comma-separated methods (default naive,filtered,exact), or "all": naive,
+                       naive-tolerance, mpfr24, mpfr53, mpfr113, mpfr256, filtered, exact
   --json FILE          also write the results as a JSON array ('-' for stdout; the table then
                        goes to stderr)
   -h, --help           this help
@@ -48,6 +49,7 @@ struct Result {
 };
 
 std::vector<Method> parse_methods(const std::string& list) {
+  if (list == "all") return all_methods();
   std::vector<Method> out;
   std::stringstream ss(list);
   for (std::string m; std::getline(ss, m, ',');) out.push_back(parse_method(m));

@@ -17,8 +17,9 @@ x_num,x_den,y_num,y_den,z_num,z_den,truth) and compares with the truth column.
 
 options:
   --kind vf|ee        query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)
-  --method NAME       filtered (default; exact), exact (CGAL reference; slow), naive (textbook
-                      doubles; NOT robust)
+  --method NAME       filtered (default; exact), exact (CGAL reference; slow); baselines, NOT
+                      robust: naive (textbook doubles), naive-tolerance (Bridson-style
+                      tolerance), mpfr24, mpfr53, mpfr113, mpfr256 (textbook in MPFR)
   --answers           print only one line per query, 0 or 1, in file order
   --stats             also print how many queries each stage of the filtered method decided
 %s  -h, --help          this help

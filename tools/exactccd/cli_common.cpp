@@ -25,11 +25,11 @@ std::optional<QueryKind> kind_from_path(const std::string& path) {
   return std::nullopt;
 }
 
-Method parse_method(const std::string& s) {
-  if (s == "filtered") return Method::filtered;
-  if (s == "exact") return Method::exact;
-  if (s == "naive") return Method::naive;
-  throw UsageError("unknown method '" + s + "' (expected filtered, exact or naive)");
+const std::vector<Method>& all_methods() {
+  static const std::vector<Method> methods = {
+      Method::naive,        Method::naive_tolerance, Method::naive_mpfr24,  Method::naive_mpfr53,
+      Method::naive_mpfr113, Method::naive_mpfr256,  Method::filtered,      Method::exact};
+  return methods;
 }
 
 std::string method_name(Method m) {
@@ -37,8 +37,20 @@ std::string method_name(Method m) {
     case Method::filtered: return "filtered";
     case Method::exact: return "exact";
     case Method::naive: return "naive";
+    case Method::naive_tolerance: return "naive-tolerance";
+    case Method::naive_mpfr24: return "mpfr24";
+    case Method::naive_mpfr53: return "mpfr53";
+    case Method::naive_mpfr113: return "mpfr113";
+    case Method::naive_mpfr256: return "mpfr256";
   }
   return "?";
+}
+
+Method parse_method(const std::string& s) {
+  for (Method m : all_methods())
+    if (method_name(m) == s) return m;
+  throw UsageError("unknown method '" + s +
+                   "' (expected filtered, exact, naive, naive-tolerance, mpfr24, mpfr53, mpfr113 or mpfr256)");
 }
 
 Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
@@ -77,7 +89,7 @@ std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method me
                                       StageCounters* counters, bool want_toi) {
   const bool vf = d.kind == QueryKind::vertex_face;
   const auto& exact_rows = d.doubles[i];
-  if (!exact_rows && method != Method::naive) {  // not doubles: the rational exact path
+  if (!exact_rows && is_exact_method(method)) {  // not doubles: the rational exact path
     if (counters) ++counters->exact;
     const auto& r = d.queries.rows[i];
     if (vf) {

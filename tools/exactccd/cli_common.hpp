@@ -36,7 +36,9 @@ std::string kind_name(QueryKind k);  ///< "vf" or "ee"
 /// The kind named by a path containing "vertex-face" or "edge-edge", if any.
 std::optional<QueryKind> kind_from_path(const std::string& path);
 
-/// "filtered", "exact", "naive".
+/// Every method, baselines first: naive, naive-tolerance, mpfr24, mpfr53, mpfr113, mpfr256,
+/// filtered, exact (their names on the command line).
+const std::vector<Method>& all_methods();
 Method parse_method(const std::string& s);
 std::string method_name(Method m);
 
