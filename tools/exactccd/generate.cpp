@@ -7,6 +7,7 @@
 
 #include "cli_common.hpp"
 #include "fuzz/catalogue.hpp"
+#include "fuzz/families.hpp"
 #include "scene/procedural_scenes.hpp"
 #include "scene/sim_queries.hpp"
 #include "subcommands.hpp"
@@ -19,12 +20,17 @@ namespace fs = std::filesystem;
 constexpr const char* kHelp = R"(usage: exactccd generate catalogue --out DIR
        exactccd generate sim --scene cloth|strip|fold [--resolution N] [--seed S]
                              [--max-queries M] --out DIR
+       exactccd generate families [--seed S] [--instances N] [--k-step K] --out DIR
 
 Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).
 
   catalogue   the hand-derived degenerate catalogue (fuzz/catalogue.cpp) with its scaled and
               translated copies: DIR/catalogue-vertex-face.csv and DIR/catalogue-edge-edge.csv;
               the truth column is the hand-derived answer
+  families    instances of every degenerate family (fuzz/families.hpp) for k = 0, K, 2K, ...
+              <= 60 and unperturbed, N per direction and (family, k) (default 1, K = 4):
+              DIR/families-vertex-face.csv and DIR/families-edge-edge.csv; the truth column is
+              the exact answer
   sim         simulation-like queries: the broad-phase candidates of one time step of a
               procedural scene (lib/scene/procedural_scenes.hpp), written to
               DIR/sim-<scene>-vertex-face.csv and DIR/sim-<scene>-edge-edge.csv; the truth
@@ -93,6 +99,7 @@ int run_generate(int argc, char** argv) {
   int resolution = 24;
   std::uint64_t seed = 1;
   std::size_t max_queries = 1000;
+  int family_instances = 1, k_step = 4;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "-h" || a == "--help") {
@@ -106,6 +113,10 @@ int run_generate(int argc, char** argv) {
       resolution = std::stoi(option_value(argc, argv, i));
     } else if (a == "--seed") {
       seed = std::stoull(option_value(argc, argv, i));
+    } else if (a == "--instances") {
+      family_instances = std::stoi(option_value(argc, argv, i));
+    } else if (a == "--k-step") {
+      k_step = std::max(1, std::stoi(option_value(argc, argv, i)));
     } else if (a == "--max-queries") {
       max_queries = std::stoul(option_value(argc, argv, i));
     } else if (!a.empty() && a[0] == '-') {
@@ -116,13 +127,33 @@ int run_generate(int argc, char** argv) {
       throw UsageError("generate: unexpected argument '" + a + "'");
     }
   }
-  if (what != "catalogue" && what != "sim")
-    throw UsageError("generate: expected 'catalogue' or 'sim' (see exactccd generate --help)");
+  if (what != "catalogue" && what != "sim" && what != "families")
+    throw UsageError("generate: expected catalogue, sim or families (see exactccd generate --help)");
   if (out.empty()) throw UsageError("generate: --out DIR is required");
   if (what == "catalogue") {
     fs::create_directories(out);
     write_atomically(fs::path(out) / "catalogue-vertex-face.csv", to_benchmark(catalogue::vertex_face_cases()));
     write_atomically(fs::path(out) / "catalogue-edge-edge.csv", to_benchmark(catalogue::edge_edge_cases()));
+    return kExitOk;
+  }
+  if (what == "families") {
+    std::vector<VertexFaceQuery> vf;
+    std::vector<EdgeEdgeQuery> ee;
+    std::mt19937_64 rng(seed);
+    for (const families::Family& f : families::all_families())
+      for (int k = families::kUnperturbed; k <= 60; k = (k < 0 ? 0 : k + k_step))
+        for (int i = 0; i < 2 * family_instances; ++i) {
+          const families::Instance inst = f.make(k, i % 2 == 0, rng);
+          if (f.vertex_face)
+            vf.push_back(std::get<VertexFaceQuery>(inst.query));
+          else
+            ee.push_back(std::get<EdgeEdgeQuery>(inst.query));
+        }
+    fs::create_directories(out);
+    write_atomically(fs::path(out) / "families-vertex-face.csv",
+                     subsample(vf, 0, [](const VertexFaceQuery& x) { return vertex_face_ccd(x); }));
+    write_atomically(fs::path(out) / "families-edge-edge.csv",
+                     subsample(ee, 0, [](const EdgeEdgeQuery& x) { return edge_edge_ccd(x); }));
     return kExitOk;
   }
   if (scene_name.empty()) throw UsageError("generate sim: --scene cloth|strip|fold is required");

@@ -18,7 +18,8 @@ struct Subcommand {
 constexpr Subcommand kSubcommands[] = {
     {"check", exactccd::cli::run_check, "answer benchmark CSV queries and compare with their truth"},
     {"bench", exactccd::cli::run_bench, "time every method on the same queries; FP/FN; filter stages"},
-    {"generate", exactccd::cli::run_generate, "write the project's query sets (degenerate catalogue)"},
+    {"generate", exactccd::cli::run_generate, "write the project's query sets (catalogue, sim, families)"},
+    {"stability", exactccd::cli::run_stability, "error rates of every method on the degenerate families vs k"},
 };
 
 void print_help() {

@@ -7,5 +7,6 @@ namespace exactccd::cli {
 int run_check(int argc, char** argv);
 int run_bench(int argc, char** argv);
 int run_generate(int argc, char** argv);
+int run_stability(int argc, char** argv);
 
 }  // namespace exactccd::cli
