@@ -19,6 +19,7 @@ constexpr Subcommand kSubcommands[] = {
     {"check", exactccd::cli::run_check, "answer benchmark CSV queries and compare with their truth"},
     {"bench", exactccd::cli::run_bench, "time every method on the same queries; FP/FN; filter stages"},
     {"generate", exactccd::cli::run_generate, "write the project's query sets (catalogue, sim, families)"},
+    {"compare", exactccd::cli::run_compare, "another code's answers against the exact ones, by category"},
     {"stability", exactccd::cli::run_stability, "error rates of every method on the degenerate families vs k"},
 };
 

@@ -8,5 +8,6 @@ int run_check(int argc, char** argv);
 int run_bench(int argc, char** argv);
 int run_generate(int argc, char** argv);
 int run_stability(int argc, char** argv);
+int run_compare(int argc, char** argv);
 
 }  // namespace exactccd::cli
