@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds exactccd and runs the oracle on the bundled data (and on the
-# shared benchmark sample, when it is beside this checkout).
+# The main job: installs what is missing, builds exactccd, runs the oracle (exactccd check) on
+# the bundled data and on the shared benchmark sample (when it is beside this checkout), then
+# the benchmark of every method on the same queries.
 # Usage: bash tools/demo.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,18 +11,17 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs" --target exactccd_cli
 exe=build/exactccd
 
-shopt -s nullglob
-bundled=(data/*/*.csv)
-if [ ${#bundled[@]} -gt 0 ]; then
-  echo "== exactccd check --stats on the bundled data (data/)"
-  "$exe" check --stats "${bundled[@]}"
-fi
+echo "== the oracle on the bundled data: exactccd check --stats data/*/*.csv"
+"$exe" check --stats data/*/*.csv
 sample=../shared/data/sample-queries/unit-tests
 if [ -d "$sample" ]; then
   echo
-  echo "== exactccd check --stats on the shared benchmark sample ($sample)"
+  echo "== the oracle on the shared benchmark sample: exactccd check --stats $sample/*/*.csv"
   "$exe" check --stats "$sample"/*/*.csv
-  echo
-  echo "== the same with the naive textbook method (not robust: note its errors)"
-  "$exe" check --method naive "$sample"/*/*.csv
 fi
+echo
+echo "== the textbook method on the same data (not robust: note its FP and FN)"
+"$exe" check --method naive data/*/*.csv
+echo
+echo "== exactccd bench --methods naive,naive-tolerance,mpfr256,filtered,exact (bundled datasets)"
+"$exe" bench --repetitions 3 --methods naive,naive-tolerance,mpfr256,filtered,exact
