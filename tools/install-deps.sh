@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
-  libgtest-dev libbenchmark-dev libeigen3-dev
+  libgtest-dev libbenchmark-dev libeigen3-dev doxygen
   python3-matplotlib
 )
 

@@ -17,6 +17,7 @@ struct StageCounters {
   /// Total number of queries counted.
   std::uint64_t total() const { return volume_exclusion + interval + integer + exact; }
 
+  /// Adds another thread's counts.
   StageCounters& operator+=(const StageCounters& o) {
     volume_exclusion += o.volume_exclusion;
     interval += o.interval;

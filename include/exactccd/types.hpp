@@ -13,7 +13,9 @@ namespace exactccd {
 /// A point or vector with three coordinates of number type T (double or mpq_class).
 template <class T>
 struct Vec3T {
-  T x, y, z;
+  T x;  ///< first coordinate
+  T y;  ///< second coordinate
+  T z;  ///< third coordinate
 };
 
 using Vec3 = Vec3T<double>;             ///< double coordinates
@@ -23,8 +25,14 @@ using RationalVec3 = Vec3T<mpq_class>;  ///< exact rational coordinates (GMP)
 /// Member order is the benchmark row order: p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1.
 template <class T>
 struct VertexFaceQueryT {
-  Vec3T<T> p_t0, a_t0, b_t0, c_t0;
-  Vec3T<T> p_t1, a_t1, b_t1, c_t1;
+  Vec3T<T> p_t0;  ///< the vertex at t = 0
+  Vec3T<T> a_t0;  ///< the triangle's first vertex at t = 0
+  Vec3T<T> b_t0;  ///< the triangle's second vertex at t = 0
+  Vec3T<T> c_t0;  ///< the triangle's third vertex at t = 0
+  Vec3T<T> p_t1;  ///< the vertex at t = 1
+  Vec3T<T> a_t1;  ///< the triangle's first vertex at t = 1
+  Vec3T<T> b_t1;  ///< the triangle's second vertex at t = 1
+  Vec3T<T> c_t1;  ///< the triangle's third vertex at t = 1
 };
 
 /// Edge-edge query: segment (a0, a1) against segment (b0, b1), each at t = 0 and t = 1.
@@ -32,8 +40,14 @@ struct VertexFaceQueryT {
 /// b1_t1.
 template <class T>
 struct EdgeEdgeQueryT {
-  Vec3T<T> a0_t0, a1_t0, b0_t0, b1_t0;
-  Vec3T<T> a0_t1, a1_t1, b0_t1, b1_t1;
+  Vec3T<T> a0_t0;  ///< first endpoint of edge a at t = 0
+  Vec3T<T> a1_t0;  ///< second endpoint of edge a at t = 0
+  Vec3T<T> b0_t0;  ///< first endpoint of edge b at t = 0
+  Vec3T<T> b1_t0;  ///< second endpoint of edge b at t = 0
+  Vec3T<T> a0_t1;  ///< first endpoint of edge a at t = 1
+  Vec3T<T> a1_t1;  ///< second endpoint of edge a at t = 1
+  Vec3T<T> b0_t1;  ///< first endpoint of edge b at t = 1
+  Vec3T<T> b1_t1;  ///< second endpoint of edge b at t = 1
 };
 
 using VertexFaceQuery = VertexFaceQueryT<double>;
@@ -61,10 +75,11 @@ Query from_rows(const std::array<Vec3T<T>, 8>& r) {
 /// returns the tightest such pair of doubles: lo == hi when t is itself a double, otherwise
 /// hi is the double right after lo.
 struct TimeInterval {
-  double lo = 0.0;
-  double hi = 0.0;
+  double lo = 0.0;  ///< lower bound: lo <= t
+  double hi = 0.0;  ///< upper bound: t <= hi
 };
 
+/// Equality of both bounds.
 inline bool operator==(const TimeInterval& a, const TimeInterval& b) {
   return a.lo == b.lo && a.hi == b.hi;
 }
