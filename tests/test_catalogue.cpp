@@ -18,11 +18,18 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-// Short test descriptions (gtest prints parameters in test lists and failures).
+// Short test descriptions (gtest prints parameters in test lists; the coordinates are
+// printed on failure by describe()).
 template <class Query>
 void PrintTo(const Entry<Query>& e, std::ostream* os) {
-  *os << e.name << " (" << e.category << ")";
-  for (const auto& p : rows(e.query)) *os << " [" << p.x.get_str() << " " << p.y.get_str() << " " << p.z.get_str() << "]";
+  *os << e.name;
+}
+
+template <class Query>
+std::string describe(const Entry<Query>& e) {
+  std::string s = e.name + " (" + e.category + "):";
+  for (const auto& p : rows(e.query)) s += " [" + p.x.get_str() + " " + p.y.get_str() + " " + p.z.get_str() + "]";
+  return s;
 }
 
 namespace {
@@ -86,6 +93,7 @@ class EdgeEdgeCatalogue : public ::testing::TestWithParam<EdgeEdgeEntry> {};
 
 TEST_P(VertexFaceCatalogue, EveryExactMethodGivesTheDerivedAnswer) {
   const VertexFaceEntry& e = GetParam();
+  SCOPED_TRACE(describe(e));
   EXPECT_EQ(vertex_face_ccd(e.query), e.collides) << "rational API";
   check_toi(e, vertex_face_toi(e.query), "rational toi");
   const VertexFaceQuery q = to_doubles(e.query);
@@ -98,6 +106,7 @@ TEST_P(VertexFaceCatalogue, EveryExactMethodGivesTheDerivedAnswer) {
 
 TEST_P(EdgeEdgeCatalogue, EveryExactMethodGivesTheDerivedAnswer) {
   const EdgeEdgeEntry& e = GetParam();
+  SCOPED_TRACE(describe(e));
   EXPECT_EQ(edge_edge_ccd(e.query), e.collides) << "rational API";
   check_toi(e, edge_edge_toi(e.query), "rational toi");
   const EdgeEdgeQuery q = to_doubles(e.query);
