@@ -34,6 +34,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "exactccd/exactccd.hpp"
@@ -88,6 +89,12 @@ std::string describe(const TestQuery& q) {
 std::string describe(const std::optional<TimeInterval>& t) {
   if (!t) return "none";
   return "[" + hex(t->lo) + ", " + hex(t->hi) + "]";
+}
+
+std::string describe(const StageCounters& c) {
+  return "stages: volume_exclusion " + std::to_string(c.volume_exclusion) + ", interval " +
+         std::to_string(c.interval) + ", integer " + std::to_string(c.integer) + ", exact " +
+         std::to_string(c.exact) + ", toi_refined " + std::to_string(c.toi_refined);
 }
 
 bool same_toi(const std::optional<TimeInterval>& a, const std::optional<TimeInterval>& b) {
@@ -400,6 +407,7 @@ TEST(FilteredAgreement, UlpShiftsOfOneCoordinate) {
   REQUIRE_SHARED_DATA();
   const auto& queries = shared_data().queries;
   std::size_t checked = 0, disagreements = 0;
+  StageCounters stages;
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const int per_query = std::min(24, kUlpCoordinatesPerQuery * stress_factor());
     for (int j = 0; j < per_query; ++j) {
@@ -412,13 +420,15 @@ TEST(FilteredAgreement, UlpShiftsOfOneCoordinate) {
         x = shift_ulps(x, k);
         const Checked c = check_agreement(
             q, queries[i].label + ", coordinate " + std::to_string(slot) + " shifted by " +
-                   std::to_string(k) + " ulps");
+                   std::to_string(k) + " ulps",
+            &stages);
         ++checked;
         disagreements += !c.ok;
       }
     }
   }
   EXPECT_EQ(disagreements, 0u) << "of " << checked << " perturbed queries";
+  std::cout << "[ ulps     ] " << checked << " perturbed queries, " << describe(stages) << "\n";
 }
 
 TEST(FilteredAgreement, PowerOfTwoScalings) {
@@ -714,8 +724,6 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
       {"plane at t0, plane at t1", [](Generator& g, Kind) { return g.in_plane(true); }},
       {"parallel or collinear", [](Generator& g, Kind k) { return g.parallel_or_collinear(k); }},
       {"crossing at a random time", [](Generator& g, Kind k) { return g.crossing(k); }},
-      // Huge exponent ranges make integers of thousands of bits: ~10-50 ms per query on the
-      // exact path, hence fewer of them.
       {"nearly coplanar", [](Generator& g, Kind k) { return g.nearly_coplanar(k); }},
       {"nearly coplanar, scaled by 2^[-400, 300]",
        [](Generator& g, Kind k) {
@@ -724,6 +732,8 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
          for (int i = 0; i < 24; ++i) coordinate(r, i) = std::ldexp(coordinate(r, i), e);
          return r;
        }},
+      // Huge exponent ranges make integers of thousands of bits: ~10-50 ms per query on the
+      // exact path, hence fewer of them.
       {"extreme magnitudes", [](Generator& g, Kind) { return g.extreme(); }, 25},
       {"nudged by ulps", [](Generator& g, Kind k) { return g.nudged(k); }},
       {"scaled by 2^e", [](Generator& g, Kind k) { return g.scaled(k); }},
@@ -734,14 +744,15 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
   for (const Family& family : families) {
     const int per_kind = family.per_kind * stress_factor();
     std::size_t family_collisions = 0, family_naive_wrong = 0;
+    StageCounters stages;
     const auto start = std::chrono::steady_clock::now();
     for (Kind kind : {Kind::vertex_face, Kind::edge_edge}) {
       for (int i = 0; i < per_kind; ++i) {
         TestQuery q;
         q.kind = kind;
         q.rows = family.make(gen, kind);
-        const Checked c = check_agreement(q, std::string("random ") + family.name + " #" +
-                                                 std::to_string(i));
+        const Checked c = check_agreement(
+            q, std::string("random ") + family.name + " #" + std::to_string(i), &stages);
         ++checked;
         disagreements += !c.ok;
         if (!c.ok) continue;
@@ -756,8 +767,9 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
       }
     }
     std::cout << "[ random   ] " << family.name << ": " << family_collisions << " of "
-              << 2 * per_kind << " collide, naive wrong on " << family_naive_wrong
-              << " (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << 2 * per_kind << " collide, naive wrong on " << family_naive_wrong << "; "
+              << describe(stages) << " ("
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
               << " s)\n";
     collisions += family_collisions;
     naive_wrong += family_naive_wrong;
@@ -808,10 +820,8 @@ TEST(FilteredStageCounters, EveryFilteredCallIsCountedOnce) {
   sum += toi_counters;
   EXPECT_EQ(sum.total(), ccd_calls + toi_calls);
 
-  for (const auto& [name, c] : {std::pair{"ccd", ccd_counters}, std::pair{"toi", toi_counters}})
-    std::cout << "[ stages   ] shared data, " << name << ": volume_exclusion "
-              << c.volume_exclusion << ", interval " << c.interval << ", integer " << c.integer
-              << ", exact " << c.exact << ", toi_refined " << c.toi_refined << "\n";
+  std::cout << "[ stages   ] shared data, ccd calls, " << describe(ccd_counters) << "\n"
+            << "[ stages   ] shared data, toi calls, " << describe(toi_counters) << "\n";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -837,6 +847,45 @@ TEST(FilteredInput, SimpleQueriesCollideAtOneHalf) {
     ASSERT_TRUE(c.ok);
     EXPECT_TRUE(c.exact.ccd);
     EXPECT_TRUE(same_toi(c.exact.toi, TimeInterval{0.5, 0.5})) << describe(c.exact.toi);
+  }
+}
+
+/// A vertex-face query: the triangle (0,0,0), (1,0,0), (0,1,0) at rest and the point (1/4, 1/4)
+/// moving from height z0 to height z1.
+TestQuery crossing_at(double z0, double z1) {
+  TestQuery q = simple_query(Kind::vertex_face);
+  q.rows[0].z = z0;
+  q.rows[4].z = z1;
+  return q;
+}
+
+TEST(FilteredInput, KnownTimesOfImpactAreTightEnclosures) {
+  constexpr double kThird = 1.0 / 3;  // rounds down: 1/3 = 0x1.5555...p-2
+  const struct {
+    const char* name;
+    TestQuery query;
+    std::optional<TimeInterval> toi;
+  } cases[] = {
+      {"crossing at 1/3 (not a double)", crossing_at(1, -2),
+       TimeInterval{kThird, std::nextafter(kThird, kInf)}},
+      {"touching at t = 0", crossing_at(0, 1), TimeInterval{0, 0}},
+      {"touching at t = 1", crossing_at(1, 0), TimeInterval{1, 1}},
+      {"never reaching the plane", crossing_at(1, 0x1p-1074), std::nullopt},
+      // Root 2^-1074 / (1 + 2^-1074): just below the smallest subnormal.
+      {"crossing before 2^-1074", crossing_at(-0x1p-1074, 1), TimeInterval{0, 0x1p-1074}},
+      // Root 1 / (1 + 2^-60): between the last double below 1 and 1.
+      {"crossing just before 1", crossing_at(-1, 0x1p-60),
+       TimeInterval{std::nextafter(1.0, 0.0), 1}},
+      // Every point at the origin: a degenerate triangle (a point) holding p from t = 0.
+      {"all points equal", TestQuery{Kind::vertex_face, Rows{}, -1}, TimeInterval{0, 0}},
+      {"all endpoints equal", TestQuery{Kind::edge_edge, Rows{}, -1}, TimeInterval{0, 0}},
+  };
+  for (const auto& c : cases) {
+    const Checked checked = check_agreement(c.query, c.name);
+    if (!checked.ok) continue;
+    EXPECT_TRUE(same_toi(checked.exact.toi, c.toi))
+        << c.name << ": exact toi " << describe(checked.exact.toi) << ", expected "
+        << describe(c.toi) << "\n  query: " << describe(c.query);
   }
 }
 
@@ -868,6 +917,45 @@ TEST(FilteredInput, NonFiniteCoordinatesThrowInvalidArgumentForEveryMethod) {
   EXPECT_EQ(calls, 2u * 24 * 3 * 3 * 4);
 }
 
+TEST(FilteredInput, ConcurrentCallsGiveTheSequentialAnswers) {
+  // The API promises thread safety (no shared mutable state) and a per-thread rounding mode:
+  // two threads answer the same queries with both exact methods, against a sequential run.
+  REQUIRE_SHARED_DATA();
+  std::vector<TestQuery> queries;
+  for (const SharedQuery& s : shared_data().queries) queries.push_back(s.query);
+  Generator gen(7);
+  for (int i = 0; i < 200; ++i) {
+    const Kind kind = i % 2 ? Kind::edge_edge : Kind::vertex_face;
+    queries.push_back(TestQuery{kind, gen.base_family(kind, i % Generator::kBaseFamilies), -1});
+  }
+  const Method methods[] = {Method::filtered, Method::exact};
+  std::vector<std::array<std::optional<TimeInterval>, 2>> expected(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    for (std::size_t m = 0; m < 2; ++m) expected[i][m] = call_toi(queries[i], methods[m], nullptr);
+
+  std::array<std::size_t, 2> mismatches{}, rounding_errors{};
+  std::array<std::string, 2> first_mismatch;
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < 2; ++t) {
+    threads.emplace_back([&, t] {
+      for (std::size_t k = 0; k < queries.size(); ++k) {
+        const std::size_t i = t == 0 ? k : queries.size() - 1 - k;  // opposite orders
+        for (std::size_t m = 0; m < 2; ++m) {
+          if (!same_toi(call_toi(queries[i], methods[m], nullptr), expected[i][m]) &&
+              mismatches[t]++ == 0)
+            first_mismatch[t] = "method " + std::to_string(m) + ": " + describe(queries[i]);
+          if (std::fegetround() != FE_TONEAREST) ++rounding_errors[t];
+        }
+      }
+    });
+  }
+  for (std::thread& th : threads) th.join();
+  for (std::size_t t = 0; t < 2; ++t) {
+    EXPECT_EQ(mismatches[t], 0u) << "thread " << t << ", first: " << first_mismatch[t];
+    EXPECT_EQ(rounding_errors[t], 0u) << "thread " << t;
+  }
+}
+
 TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
   // check_agreement checks the rounding mode after every call; here the queries are chosen so
   // that, together, they reach every stage of the filtered method (asserted with counters).
@@ -891,9 +979,8 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
   }
   EXPECT_GT(counters.volume_exclusion, 0u);
   EXPECT_GT(counters.interval, 0u);
-  std::cout << "[ stages   ] reached: volume_exclusion " << counters.volume_exclusion
-            << ", interval " << counters.interval << ", integer " << counters.integer
-            << ", exact " << counters.exact << "\n";
+  EXPECT_GT(counters.integer, 0u);
+  std::cout << "[ stages   ] reached " << describe(counters) << "\n";
 }
 
 }  // namespace
