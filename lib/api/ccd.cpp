@@ -37,75 +37,85 @@ baseline::NaiveVariant naive_variant(Method m) {
   }
 }
 
-std::optional<TimeInterval> toi(const VertexFaceQuery& q, Method method, bool want_toi,
-                                StageCounters* counters) {
-  require_finite(q, want_toi ? "vertex_face_toi" : "vertex_face_ccd");
-  switch (method) {
-    case Method::exact:
-      if (!want_toi)
-        return exact::vertex_face_ccd(exact::to_rational(q)) ? std::optional(TimeInterval{})
-                                                             : std::nullopt;
-      return exact::vertex_face_toi(exact::to_rational(q));
-    case Method::filtered:
-      break;
-    default:
-      return point_interval(baseline::naive_vertex_face_toi(q, naive_variant(method)));
-  }
-  return want_toi ? filter::vertex_face_toi(q, counters)
-                  : (filter::vertex_face_ccd(q, counters) ? std::optional(TimeInterval{})
-                                                          : std::nullopt);
+// The per-kind entry points of each method, as overload sets, so that one template answers
+// both kinds.
+bool exact_ccd(const VertexFaceQuery& q) { return exact::vertex_face_ccd(exact::to_rational(q)); }
+bool exact_ccd(const EdgeEdgeQuery& q) { return exact::edge_edge_ccd(exact::to_rational(q)); }
+std::optional<TimeInterval> exact_toi(const VertexFaceQuery& q) {
+  return exact::vertex_face_toi(exact::to_rational(q));
+}
+std::optional<TimeInterval> exact_toi(const EdgeEdgeQuery& q) {
+  return exact::edge_edge_toi(exact::to_rational(q));
+}
+std::optional<double> naive_toi(const VertexFaceQuery& q, baseline::NaiveVariant v) {
+  return baseline::naive_vertex_face_toi(q, v);
+}
+std::optional<double> naive_toi(const EdgeEdgeQuery& q, baseline::NaiveVariant v) {
+  return baseline::naive_edge_edge_toi(q, v);
+}
+bool filtered_ccd(const VertexFaceQuery& q, StageCounters* c) { return filter::vertex_face_ccd(q, c); }
+bool filtered_ccd(const EdgeEdgeQuery& q, StageCounters* c) { return filter::edge_edge_ccd(q, c); }
+std::optional<TimeInterval> filtered_toi(const VertexFaceQuery& q, StageCounters* c) {
+  return filter::vertex_face_toi(q, c);
+}
+std::optional<TimeInterval> filtered_toi(const EdgeEdgeQuery& q, StageCounters* c) {
+  return filter::edge_edge_toi(q, c);
+}
+const char* function_name(const VertexFaceQuery&, bool want_toi) {
+  return want_toi ? "vertex_face_toi" : "vertex_face_ccd";
+}
+const char* function_name(const EdgeEdgeQuery&, bool want_toi) {
+  return want_toi ? "edge_edge_toi" : "edge_edge_ccd";
 }
 
-std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, bool want_toi,
-                                StageCounters* counters) {
-  require_finite(q, want_toi ? "edge_edge_toi" : "edge_edge_ccd");
+/// A collision without a TOI (for the boolean functions, only its presence matters).
+std::optional<TimeInterval> collides(bool c) { return c ? std::optional(TimeInterval{}) : std::nullopt; }
+
+/// One query by one method: the TOI when want_toi, else a placeholder interval on collision.
+template <class Query>
+std::optional<TimeInterval> answer(const Query& q, Method method, bool want_toi, StageCounters* counters) {
+  require_finite(q, function_name(q, want_toi));
   switch (method) {
-    case Method::exact:
-      if (!want_toi)
-        return exact::edge_edge_ccd(exact::to_rational(q)) ? std::optional(TimeInterval{})
-                                                           : std::nullopt;
-      return exact::edge_edge_toi(exact::to_rational(q));
     case Method::filtered:
-      break;
+      return want_toi ? filtered_toi(q, counters) : collides(filtered_ccd(q, counters));
+    case Method::exact:
+      return want_toi ? exact_toi(q) : collides(exact_ccd(q));
     default:
-      return point_interval(baseline::naive_edge_edge_toi(q, naive_variant(method)));
+      return point_interval(naive_toi(q, naive_variant(method)));
   }
-  return want_toi ? filter::edge_edge_toi(q, counters)
-                  : (filter::edge_edge_ccd(q, counters) ? std::optional(TimeInterval{})
-                                                        : std::nullopt);
 }
 
 }  // namespace
 
 bool vertex_face_ccd(const VertexFaceQuery& q, Method method) {
-  return toi(q, method, false, nullptr).has_value();
+  return answer(q, method, false, nullptr).has_value();
 }
 bool vertex_face_ccd(const VertexFaceQuery& q, Method method, StageCounters& counters) {
-  return toi(q, method, false, &counters).has_value();
+  return answer(q, method, false, &counters).has_value();
 }
 bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method) {
-  return toi(q, method, false, nullptr).has_value();
+  return answer(q, method, false, nullptr).has_value();
 }
 bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method, StageCounters& counters) {
-  return toi(q, method, false, &counters).has_value();
+  return answer(q, method, false, &counters).has_value();
 }
 
 bool vertex_face_ccd(const RationalVertexFaceQuery& q) { return exact::vertex_face_ccd(q); }
 bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) { return exact::edge_edge_ccd(q); }
 
 std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, Method method) {
-  return toi(q, method, true, nullptr);
+  return answer(q, method, true, nullptr);
 }
 std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, Method method,
                                             StageCounters& counters) {
-  return toi(q, method, true, &counters);
+  return answer(q, method, true, &counters);
 }
 std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method) {
-  return toi(q, method, true, nullptr);
+  return answer(q, method, true, nullptr);
 }
 std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method,
                                           StageCounters& counters) {
-  return toi(q, method, true, &counters);
+  return answer(q, method, true, &counters);
 }
 
 std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
