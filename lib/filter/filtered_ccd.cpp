@@ -4,6 +4,7 @@
 #include "exact/rational_query.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
+#include "filter/normalize.hpp"
 #include "filter/volume_exclusion.hpp"
 
 namespace exactccd::filter {
@@ -23,8 +24,16 @@ std::optional<TimeInterval> answer(const StageResult& r) {
 /// One query through the stages. Kind bundles the per-primitive functions. Without want_toi a
 /// collision is returned as the placeholder interval [0, 0] (only its presence matters).
 template <class Kind, class Query>
-std::optional<TimeInterval> filtered_toi(const Query& q, bool want_toi, StageCounters* counters) {
-  if (Kind::volume_excluded(q)) {
+std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, StageCounters* counters) {
+  if (Kind::volume_excluded(input)) {
+    count(counters, &StageCounters::volume_exclusion);
+    return std::nullopt;
+  }
+  // Past the hot path: bring the scene's magnitude near 1 (exactly) so that huge or tiny
+  // coordinates do not overflow or underflow the filters; answers are unchanged.
+  bool scaled = false;
+  const Query q = scaled_to_unit(input, scaled);
+  if (scaled && Kind::volume_excluded(q)) {
     count(counters, &StageCounters::volume_exclusion);
     return std::nullopt;
   }

@@ -1,0 +1,37 @@
+// Exact power-of-two normalisation of a query before the floating-point filters.
+//
+// Multiplying every coordinate by 2^s multiplies every contact polynomial by a positive power
+// of two: signs, roots, answers and the TOI are unchanged. Bringing the largest magnitude near
+// 1 keeps huge scenes (~1e300) from overflowing and tiny ones (subnormal) from underflowing in
+// the filters, which would otherwise pass them on to the exact integer stage.
+#pragma once
+
+#include <cmath>
+
+#include "exactccd/types.hpp"
+
+namespace exactccd::filter {
+
+/// The query scaled by 2^s so that its largest |coordinate| lies in [1, 2), when every scaled
+/// coordinate is exact (scaling up never rounds below the largest magnitude 2; scaling down may
+/// underflow small coordinates, and then the query is returned unchanged). sets `scaled`.
+template <class Query>
+Query scaled_to_unit(const Query& q, bool& scaled) {
+  scaled = false;
+  auto r = rows(q);
+  double largest = 0;
+  for (const Vec3& p : r) largest = std::fmax(largest, std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))));
+  if (largest == 0) return q;
+  const int s = -std::ilogb(largest);
+  if (s == 0) return q;
+  for (Vec3& p : r)
+    for (double* x : {&p.x, &p.y, &p.z}) {
+      const double y = std::ldexp(*x, s);
+      if (std::ldexp(y, -s) != *x) return q;  // a coordinate would round (underflow)
+      *x = y;
+    }
+  scaled = true;
+  return from_rows<Query>(r);
+}
+
+}  // namespace exactccd::filter
