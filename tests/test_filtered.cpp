@@ -382,11 +382,14 @@ TEST(FilteredAgreement, SharedQueriesMatchExactAndGroundTruth) {
 // ---------------------------------------------------------------------------------------------
 // 2. Perturbations of the shared queries.
 //
-// Runtime budget (the exact path costs ~0.1-1 ms per call, and every check makes two exact
-// calls): the ulp family shifts kUlpCoordinatesPerQuery coordinates per query, one at a time,
-// cycling through all 24 coordinate slots across consecutive queries (query i shifts slots
-// (i * n + j) mod 24, j < n), by k ulps for every k in -4..4, k != 0. The scale and translation
-// families use every query. A shifted zero becomes a subnormal (k * 2^-1074), deliberately.
+// Runtime budget (~60 s for the whole file in a Release build on 2 cores; every check makes
+// two filtered and two exact calls): the ulp family is a deterministic subset. It shifts
+// kUlpCoordinatesPerQuery = 6 coordinates per query, one at a time, cycling through all 24
+// coordinate slots across consecutive queries (query i shifts slots (6 i + j) mod 24, j < 6,
+// so every 4 consecutive queries cover all 24 slots), by k ulps for every k in -4..4, k != 0:
+// 324 x 6 x 8 = 15552 queries, ~6 s in Release (measured). EXACTCCD_STRESS=4 or more shifts
+// all 24 slots of every query. The scale and translation families use every query. A shifted
+// zero becomes a subnormal (k * 2^-1074), deliberately.
 
 constexpr int kUlpCoordinatesPerQuery = 6;
 
@@ -487,6 +490,9 @@ TEST(FilteredAgreement, PowerOfTwoTranslations) {
 
 // ---------------------------------------------------------------------------------------------
 // 3. Random degenerate queries on small dyadic grids (fixed seed).
+//
+// 13 families, 250 queries of each kind per family (25 for the slow extreme magnitudes):
+// 6050 queries, ~6 s in Release (measured). EXACTCCD_STRESS=n multiplies the counts.
 
 class Generator {
  public:
@@ -965,6 +971,20 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
   std::vector<TestQuery> queries;
   for (const SharedQuery& s : shared_data().queries) queries.push_back(s.query);
   for (Kind kind : {Kind::vertex_face, Kind::edge_edge}) queries.push_back(simple_query(kind));
+  // An edge-edge candidate of the folding-sheet scene (data/sim): its endpoint meets the other
+  // edge at an irrational time, where a parameter polynomial vanishes exactly (the edges lie on
+  // the grid's boundary row y = -1/2): only the integer stage can certify that zero.
+  queries.push_back(TestQuery{
+      Kind::edge_edge,
+      {Vec3{-0x1.5555555555558p-4, -0x1p-1, 0x1.bc758523fa9acp-10},
+       Vec3{-0x1.555555555555p-5, -0x1p-1, 0x1.055095fc95602p-10},
+       Vec3{-0x1.543ddcb6e394fp-4, -0x1p-1, 0x1.13a69d7d82f45p-6},
+       Vec3{-0x1.fe5ccb12555fep-4, -0x1.d555555555555p-2, 0x1.2da1a486ff0a7p-6},
+       Vec3{-0x1.57480aaeb4277p-4, -0x1p-1, 0x1.23ad17bed7afep-9},
+       Vec3{-0x1.532c9d7804aap-5, -0x1p-1, 0x1.024b53e622b6cp-9},
+       Vec3{-0x1.552e03c239349p-4, -0x1p-1, 0x1.6bca68bce12dp-11},
+       Vec3{-0x1.ffc505a355cf6p-4, -0x1.d555555555555p-2, -0x1.ce8767762e64p-11}},
+      1});
   for (const TestQuery& q : queries) {
     call_ccd(q, Method::filtered, &counters);
     ASSERT_EQ(std::fegetround(), FE_TONEAREST) << describe(q);

@@ -22,6 +22,12 @@
 //    is uncertain. Uncertain: shrink T by certified bisection of V and retry once.
 // 3. The earliest root where the rule holds is the TOI (the candidate argument of
 //    exact_ccd.cpp). It is narrowed by certified bisection to two consecutive doubles.
+// 4. Coplanar for all t (V's coefficients exactly [0, 0]): the candidates are 0, 1 and the
+//    roots of the in-plane polynomials the rule can consult (pruned as in the integer stage),
+//    isolated the same way (Bernstein of degree 2 or 4). At a candidate root of q, q's sign is
+//    0 and every other sign comes from the cell as above (narrowed by bisection of q). The
+//    answer is certain when every candidate is decided; the TOI only when the earliest
+//    contact is an exact point and no undecided or contacting cell starts before it.
 #include "filter/interval_stage.hpp"
 
 #include <CGAL/Interval_nt.h>
@@ -29,6 +35,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "contact/contact_rule.hpp"
 
@@ -36,10 +43,13 @@ namespace exactccd::filter {
 namespace {
 
 using Interval = CGAL::Interval_nt<false>;  // requires the rounding mode set by the caller
-using Bernstein = std::array<Interval, 4>;
+template <int D>
+using Bernstein = std::array<Interval, D + 1>;
 
 constexpr int kMaxSubdivisionDepth = 30;  // cells of width 2^-30; closer roots go to exact
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kBinomial[5][5] = {
+    {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
 
 int certain_sign(const Interval& x) {
   if (x.inf() > 0) return 1;
@@ -47,48 +57,42 @@ int certain_sign(const Interval& x) {
   return 0;  // contains zero (or NaN bounds)
 }
 
-Bernstein to_bernstein(const contact::Poly<Interval, 3>& v) {
-  const Interval& c0 = v.c[0];
-  const Interval& c1 = v.c[1];
-  const Interval& c2 = v.c[2];
-  const Interval& c3 = v.c[3];
-  return {c0, c0 + c1 / 3, c0 + (2 * c1 + c2) / 3, c0 + c1 + c2 + c3};
+/// Bernstein coefficients on [0, 1]: b_j = sum_{i <= j} C(j, i) / C(D, i) c_i.
+template <int D>
+Bernstein<D> to_bernstein(const contact::Poly<Interval, D>& p) {
+  Bernstein<D> b;
+  for (int j = 0; j <= D; ++j) {
+    Interval sum(0);
+    for (int i = 0; i <= j; ++i) sum = sum + p.c[i] * kBinomial[j][i] / kBinomial[D][i];
+    b[j] = sum;
+  }
+  return b;
 }
 
-/// de Casteljau at 1/2: the coefficients on the left and right halves.
-void halve(const Bernstein& b, Bernstein& left, Bernstein& right) {
-  const Interval b01 = (b[0] + b[1]) / 2, b12 = (b[1] + b[2]) / 2, b23 = (b[2] + b[3]) / 2;
-  const Interval b012 = (b01 + b12) / 2, b123 = (b12 + b23) / 2;
-  const Interval mid = (b012 + b123) / 2;
-  left = {b[0], b01, b012, mid};
-  right = {mid, b123, b23, b[3]};
+/// de Casteljau at 1/2 (divisions by 2 are exact): the coefficients on the two halves.
+template <int D>
+void halve(const Bernstein<D>& b, Bernstein<D>& left, Bernstein<D>& right) {
+  Bernstein<D> work = b;
+  left[0] = work[0];
+  right[D] = work[D];
+  for (int level = 1; level <= D; ++level) {
+    for (int i = 0; i <= D - level; ++i) work[i] = (work[i] + work[i + 1]) / 2;
+    left[level] = work[0];
+    right[D - level] = work[D - level];
+  }
 }
 
-/// Where V vanishes: either exactly at the double lo == hi (an exact zero found at a dyadic
-/// point), or at exactly one simple root in the open interval (lo, hi), with V's sign at lo.
+/// Where a polynomial vanishes: exactly at the double lo == hi (an exact zero at a dyadic
+/// point), or at exactly one simple root in the open interval (lo, hi), with its sign at lo.
 struct RootCell {
   double lo, hi;
   int sign_at_lo;
   bool is_point() const { return lo == hi; }
 };
 
-/// Small fixed-capacity list: a cubic that is not identically zero has at most three roots.
-struct RootCells {
-  std::array<RootCell, 3> cells;
-  int size = 0;
-  bool overflow = false;
-  void push_back(const RootCell& c) {
-    if (size < 3)
-      cells[size++] = c;
-    else
-      overflow = true;
-  }
-};
-
 enum class Isolation { complete, failed };
 
-/// Sign class of a Bernstein coefficient: an interval that is exactly [0, 0] is a certain zero
-/// (interval arithmetic encloses the true value, so the true value is 0).
+/// Sign class of an interval: exactly [0, 0] is a certain zero (it encloses only 0).
 enum class SignClass { negative, zero, positive, unknown };
 
 SignClass classify(const Interval& x) {
@@ -98,19 +102,20 @@ SignClass classify(const Interval& x) {
   return SignClass::unknown;
 }
 
-/// Appends the roots of V in the cell [lo, hi] with coefficients b, in increasing order; the
+/// Appends the roots in the cell [lo, hi] (Bernstein coefficients b) in increasing order; the
 /// roots at the cell's ends are the caller's. Descartes' rule in the Bernstein basis counts
 /// sign changes among the nonzero coefficients.
-Isolation isolate(const Bernstein& b, double lo, double hi, int depth, RootCells& out) {
-  std::array<SignClass, 4> s{};
+template <int D>
+Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, std::vector<RootCell>& out) {
+  std::array<SignClass, D + 1> s{};
   bool certain = true, all_zero = true;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i <= D; ++i) {
     s[i] = classify(b[i]);
     certain = certain && s[i] != SignClass::unknown;
     all_zero = all_zero && s[i] == SignClass::zero;
   }
   if (certain) {
-    if (all_zero) return Isolation::failed;  // V vanishes identically: a later stage decides
+    if (all_zero) return Isolation::failed;  // vanishes identically on the cell
     int changes = 0;
     SignClass last = SignClass::zero;
     for (SignClass c : s) {
@@ -119,27 +124,30 @@ Isolation isolate(const Bernstein& b, double lo, double hi, int depth, RootCells
       last = c;
     }
     if (changes == 0) return Isolation::complete;
-    if (changes == 1 && s[0] != SignClass::zero && s[3] != SignClass::zero) {
+    if (changes == 1 && s[0] != SignClass::zero && s[D] != SignClass::zero) {
       out.push_back(RootCell{lo, hi, s[0] == SignClass::positive ? 1 : -1});
       return Isolation::complete;
     }
   }
   if (depth == kMaxSubdivisionDepth) return Isolation::failed;
-  Bernstein left, right;
-  halve(b, left, right);
+  Bernstein<D> left, right;
+  halve<D>(b, left, right);
   const double mid = lo + (hi - lo) / 2;  // exact: dyadic cells of [0, 1]
-  if (isolate(left, lo, mid, depth + 1, out) == Isolation::failed) return Isolation::failed;
-  if (classify(left[3]) == SignClass::zero) out.push_back(RootCell{mid, mid, 0});
-  return isolate(right, mid, hi, depth + 1, out);
+  if (isolate<D>(left, lo, mid, depth + 1, out) == Isolation::failed) return Isolation::failed;
+  if (classify(left[D]) == SignClass::zero) out.push_back(RootCell{mid, mid, 0});
+  return isolate<D>(right, mid, hi, depth + 1, out);
 }
 
-/// The roots of V in [0, 1] in increasing order, exact zeros at 0 and 1 included.
-Isolation isolate_roots(const contact::Poly<Interval, 3>& v, RootCells& out) {
-  const Bernstein b = to_bernstein(v);
-  if (classify(b[0]) == SignClass::zero) out.push_back(RootCell{0.0, 0.0, 0});
-  if (isolate(b, 0.0, 1.0, 0, out) == Isolation::failed) return Isolation::failed;
-  if (classify(b[3]) == SignClass::zero) out.push_back(RootCell{1.0, 1.0, 0});
-  return out.overflow ? Isolation::failed : Isolation::complete;
+/// The roots in [0, 1] of a polynomial not identically zero, in increasing order, exact zeros
+/// at 0 and 1 included when include_ends.
+template <int D>
+Isolation isolate_roots(const contact::Poly<Interval, D>& p, std::vector<RootCell>& out,
+                        bool include_ends = true) {
+  const Bernstein<D> b = to_bernstein(p);
+  if (include_ends && classify(b[0]) == SignClass::zero) out.push_back(RootCell{0.0, 0.0, 0});
+  if (isolate<D>(b, 0.0, 1.0, 0, out) == Isolation::failed) return Isolation::failed;
+  if (include_ends && classify(b[D]) == SignClass::zero) out.push_back(RootCell{1.0, 1.0, 0});
+  return Isolation::complete;
 }
 
 /// How far narrow() got.
@@ -149,15 +157,16 @@ enum class Narrowing {
   stuck,    ///< a midpoint's sign is uncertain; the cell is still valid, just not narrower
 };
 
-/// Halves the root cell while V's sign at the midpoint is certain, at most max_steps times,
-/// until lo and hi are consecutive doubles or the midpoint is an exact zero (the cell becomes
-/// that point).
-Narrowing narrow(const contact::Poly<Interval, 3>& v, RootCell& cell, int max_steps) {
+/// Halves the root cell of p while p's sign at the midpoint is certain, at most max_steps
+/// times, until lo and hi are consecutive doubles or the midpoint is an exact zero (the cell
+/// becomes that point).
+template <int D>
+Narrowing narrow(const contact::Poly<Interval, D>& p, RootCell& cell, int max_steps) {
   for (int step = 0; step < max_steps; ++step) {
     if (cell.is_point() || !(std::nextafter(cell.lo, kInf) < cell.hi)) return Narrowing::done;
     double mid = cell.lo + (cell.hi - cell.lo) / 2;
     if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, kInf);
-    const SignClass c = classify(v(Interval(mid)));
+    const SignClass c = classify(p(Interval(mid)));
     if (c == SignClass::unknown) return Narrowing::stuck;
     if (c == SignClass::zero) {
       cell = RootCell{mid, mid, 0};
@@ -170,11 +179,14 @@ Narrowing narrow(const contact::Poly<Interval, 3>& v, RootCell& cell, int max_st
                                                                          : Narrowing::partial;
 }
 
-/// Sign oracle over a time interval: certain signs, or kUnknownSign.
+/// Sign oracle over a time interval: certain signs, or kUnknownSign. The polynomial whose root
+/// defines the candidate (if any) is zero there by construction.
 struct IntervalSignOracle {
   Interval t;
+  const void* zero_at_candidate = nullptr;
   template <int D>
   int operator()(const contact::Poly<Interval, D>& p) const {
+    if (static_cast<const void*>(&p) == zero_at_candidate) return 0;
     const Interval value = p(t);
     const int s = certain_sign(value);
     if (s != 0) return s;
@@ -185,17 +197,19 @@ struct IntervalSignOracle {
 
 enum class CellVerdict { contact, no_contact, uncertain };
 
-/// The in-plane rule over a root cell; on an uncertain sign the cell is narrowed (16 halvings,
-/// then to consecutive doubles) and the rule retried, while narrowing makes progress.
-template <class Polys>
-CellVerdict in_plane_verdict(const Polys& P, RootCell& cell) {
+/// The in-plane rule over a root cell of `defining`; on an uncertain sign the cell is narrowed
+/// (16 halvings, then to consecutive doubles) and the rule retried, while that makes progress.
+template <class Polys, int D>
+CellVerdict in_plane_verdict(const Polys& P, const contact::Poly<Interval, D>& defining, bool defining_is_rule_poly,
+                             RootCell& cell) {
   for (int attempt = 0; attempt < 3; ++attempt) {
-    const contact::Truth t = contact::in_plane_contact(P, IntervalSignOracle{Interval(cell.lo, cell.hi)});
+    const IntervalSignOracle oracle{Interval(cell.lo, cell.hi), defining_is_rule_poly ? &defining : nullptr};
+    const contact::Truth t = contact::in_plane_contact(P, oracle);
     if (t == contact::Truth::yes) return CellVerdict::contact;
     if (t == contact::Truth::no) return CellVerdict::no_contact;
     if (cell.is_point()) return CellVerdict::uncertain;
     const RootCell before = cell;
-    narrow(P.volume(), cell, attempt == 0 ? 16 : 1100);
+    narrow(defining, cell, attempt == 0 ? 16 : 1100);
     if (cell.lo == before.lo && cell.hi == before.hi) return CellVerdict::uncertain;
   }
   return CellVerdict::uncertain;
@@ -210,17 +224,22 @@ IntervalQuery to_interval_query(const Query& q) {
   return from_rows<IntervalQuery>(r);
 }
 
-/// The stage on one query.
-template <class IntervalQuery>
-StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
-  const auto P = contact::polynomials(q);
-  RootCells cells;
-  if (isolate_roots(P.volume(), cells) == Isolation::failed) return {};
-  if (cells.size == 0) return {Verdict::no_collision, std::nullopt};
+template <int D>
+bool exactly_zero(const contact::Poly<Interval, D>& p) {
+  for (const Interval& c : p.c)
+    if (classify(c) != SignClass::zero) return false;
+  return true;
+}
+
+/// The stage when V is not identically zero: the roots of V in increasing order.
+template <class Polys>
+StageResult moving_stage(const Polys& P, bool want_toi) {
+  std::vector<RootCell> cells;
+  if (isolate_roots(P.volume(), cells) == Isolation::failed || cells.size() > 3) return {};
+  if (cells.empty()) return {Verdict::no_collision, std::nullopt};
   bool earlier_uncertain = false;
-  for (int i = 0; i < cells.size; ++i) {
-    RootCell cell = cells.cells[i];
-    const CellVerdict v = in_plane_verdict(P, cell);
+  for (RootCell cell : cells) {
+    const CellVerdict v = in_plane_verdict(P, P.volume(), false, cell);
     if (v == CellVerdict::uncertain) {
       earlier_uncertain = true;
       continue;
@@ -228,13 +247,72 @@ StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
     if (v == CellVerdict::no_contact) continue;
     StageResult r{Verdict::collision, std::nullopt};
     // The TOI is this root only if no earlier root is uncertain; narrowing may still fail
-    // (e.g. the root is itself a double), then the exact path encloses it.
+    // (e.g. the root is itself a double), then a later stage encloses it.
     if (want_toi && !earlier_uncertain && narrow(P.volume(), cell, 1100) == Narrowing::done)
       r.toi = TimeInterval{cell.lo, cell.hi};
     return r;
   }
   if (earlier_uncertain) return {};
   return {Verdict::no_collision, std::nullopt};
+}
+
+/// The stage when V vanishes identically (coplanar for all t): see the file comment, item 4.
+template <class Polys>
+StageResult coplanar_stage(const Polys& P, bool want_toi) {
+  bool failed = false, uncertain = false;
+  std::optional<TimeInterval> earliest_contact;  // among decided candidates
+  double earliest_undecided = kInf;              // the smallest lo of an undecided cell
+  const auto examine = [&](const auto& defining, bool is_rule_poly, RootCell cell) {
+    const CellVerdict v = in_plane_verdict(P, defining, is_rule_poly, cell);
+    if (v == CellVerdict::uncertain) {
+      uncertain = true;
+      earliest_undecided = std::min(earliest_undecided, cell.lo);
+    } else if (v == CellVerdict::contact) {
+      const TimeInterval t{cell.lo, cell.hi};
+      if (!earliest_contact || t.lo < earliest_contact->lo ||
+          (t.lo == earliest_contact->lo && t.hi < earliest_contact->hi))
+        earliest_contact = t;
+    }
+  };
+  const auto candidates_of = [&](const auto& p) {  // returns the number of roots
+    if (failed || exactly_zero(p)) return std::size_t{0};
+    std::vector<RootCell> cells;
+    if (isolate_roots(p, cells, false) == Isolation::failed) {
+      failed = true;
+      return std::size_t{0};
+    }
+    for (const RootCell& c : cells) examine(p, true, c);
+    return cells.size();
+  };
+  const contact::Poly<Interval, 0> constant{{Interval(1)}};  // defines no root: ends of [0, 1]
+  examine(constant, false, RootCell{0.0, 0.0, 0});
+  examine(constant, false, RootCell{1.0, 1.0, 0});
+  bool nowhere_zero = false, identically_zero = true;
+  const auto& v = contact::branch_vector(P);
+  for (const auto* component : {&v.x, &v.y, &v.z}) {
+    if (exactly_zero(*component)) continue;
+    identically_zero = false;
+    if (candidates_of(*component) == 0 && !failed && certain_sign((*component)(Interval(0.0, 1.0))) != 0)
+      nowhere_zero = true;  // no root and certainly nonzero on [0, 1]
+  }
+  if (!identically_zero) contact::for_each_proper_poly(P, candidates_of);
+  if (!nowhere_zero) contact::for_each_degenerate_poly(P, candidates_of);
+  if (failed) return {};
+  if (!earliest_contact) return uncertain ? StageResult{} : StageResult{Verdict::no_collision, std::nullopt};
+  StageResult r{Verdict::collision, std::nullopt};
+  // The TOI is certain when the earliest contact is an exact point that no undecided cell
+  // precedes (a contact cell (lo, hi) is not narrowed to a tight enclosure here).
+  if (want_toi && earliest_contact->lo == earliest_contact->hi && earliest_undecided > earliest_contact->lo)
+    r.toi = earliest_contact;
+  return r;
+}
+
+/// The stage on one query.
+template <class IntervalQuery>
+StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
+  const auto P = contact::polynomials(q);
+  if (exactly_zero(P.volume())) return coplanar_stage(P, want_toi);
+  return moving_stage(P, want_toi);
 }
 
 }  // namespace
