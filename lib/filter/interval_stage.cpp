@@ -31,6 +31,7 @@
 #include "filter/interval_stage.hpp"
 
 #include <CGAL/Interval_nt.h>
+#include <boost/container/small_vector.hpp>
 
 #include <array>
 #include <cmath>
@@ -92,6 +93,9 @@ struct RootCell {
 
 enum class Isolation { complete, failed };
 
+/// Root cells of one polynomial: at most its degree (4), so no allocation on this path.
+using RootCells = boost::container::small_vector<RootCell, 4>;
+
 /// Sign class of an interval: exactly [0, 0] is a certain zero (it encloses only 0).
 enum class SignClass { negative, zero, positive, unknown };
 
@@ -106,7 +110,7 @@ SignClass classify(const Interval& x) {
 /// roots at the cell's ends are the caller's. Descartes' rule in the Bernstein basis counts
 /// sign changes among the nonzero coefficients.
 template <int D>
-Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, std::vector<RootCell>& out) {
+Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, RootCells& out) {
   std::array<SignClass, D + 1> s{};
   bool certain = true, all_zero = true;
   for (int i = 0; i <= D; ++i) {
@@ -141,7 +145,7 @@ Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, std::v
 /// The roots in [0, 1] of a polynomial not identically zero, in increasing order, exact zeros
 /// at 0 and 1 included when include_ends.
 template <int D>
-Isolation isolate_roots(const contact::Poly<Interval, D>& p, std::vector<RootCell>& out,
+Isolation isolate_roots(const contact::Poly<Interval, D>& p, RootCells& out,
                         bool include_ends = true) {
   const Bernstein<D> b = to_bernstein(p);
   if (include_ends && classify(b[0]) == SignClass::zero) out.push_back(RootCell{0.0, 0.0, 0});
@@ -234,7 +238,7 @@ bool exactly_zero(const contact::Poly<Interval, D>& p) {
 /// The stage when V is not identically zero: the roots of V in increasing order.
 template <class Polys>
 StageResult moving_stage(const Polys& P, bool want_toi) {
-  std::vector<RootCell> cells;
+  RootCells cells;
   if (isolate_roots(P.volume(), cells) == Isolation::failed || cells.size() > 3) return {};
   if (cells.empty()) return {Verdict::no_collision, std::nullopt};
   bool earlier_uncertain = false;
@@ -276,7 +280,7 @@ StageResult coplanar_stage(const Polys& P, bool want_toi) {
   };
   const auto candidates_of = [&](const auto& p) {  // returns the number of roots
     if (failed || exactly_zero(p)) return std::size_t{0};
-    std::vector<RootCell> cells;
+    RootCells cells;
     if (isolate_roots(p, cells, false) == Isolation::failed) {
       failed = true;
       return std::size_t{0};
