@@ -122,3 +122,8 @@ if(NOT rc EQUAL 2)
   message(FATAL_ERROR "compare with too few answers: exit ${rc}, expected 2")
 endif()
 file(REMOVE ${theirs})
+# 12. check --json: one object per file with the documented keys.
+execute_process(COMMAND ${EXE} check --json ${DATA}/small-vertex-face.csv RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "\"queries\": 2, \"positives\": 1, \"fp\": 0, \"fn\": 0")
+  message(FATAL_ERROR "check --json: exit ${rc}\n${out}")
+endif()

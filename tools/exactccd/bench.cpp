@@ -93,7 +93,7 @@ void write_json(std::ostream& out, const std::vector<Result>& results) {
   out << "[\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const Result& r = results[i];
-    out << "  {\"dataset\": \"" << r.dataset << "\", \"kind\": \"" << r.kind << "\", \"method\": \""
+    out << "  {\"dataset\": " << json_string(r.dataset) << ", \"kind\": \"" << r.kind << "\", \"method\": \""
         << r.method << "\", \"queries\": " << r.queries << ", \"mean_ns\": " << r.mean_ns
         << ", \"median_ns\": " << r.median_ns << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn
         << ", \"exact_fallbacks\": " << r.exact_fallbacks << ", \"stages\": {\"volume_exclusion\": "

@@ -22,6 +22,8 @@ options:
                       tolerance), mpfr24, mpfr53, mpfr113, mpfr256 (textbook in MPFR)
   --answers           print only one line per query, 0 or 1, in file order
   --stats             also print how many queries each stage of the filtered method decided
+  --json              print a JSON array instead of the table: one object per file with keys
+                      file, kind, method, queries, positives, fp, fn, us_per_query, stages
 %s  -h, --help          this help
 
 output: per file, queries, truth positives, false positives, false negatives and the mean time
@@ -40,7 +42,7 @@ struct Totals {
 int run_check(int argc, char** argv) {
   std::optional<QueryKind> kind;
   Method method = Method::filtered;
-  bool answers = false, stats = false;
+  bool answers = false, stats = false, json = false;
   BatchOptions batch;
   std::vector<std::string> files;
   for (int i = 0; i < argc; ++i) {
@@ -58,6 +60,8 @@ int run_check(int argc, char** argv) {
       answers = true;
     } else if (a == "--stats") {
       stats = true;
+    } else if (a == "--json") {
+      json = true;
     } else if (!a.empty() && a[0] == '-') {
       throw UsageError("check: unknown option '" + a + "' (see exactccd check --help)");
     } else {
@@ -65,6 +69,7 @@ int run_check(int argc, char** argv) {
     }
   }
   if (files.empty()) throw UsageError("check: no input file (see exactccd check --help)");
+  if (json && answers) throw UsageError("check: --json and --answers exclude each other");
 
   // Parse everything first: a malformed file fails before anything is printed.
   std::vector<Dataset> datasets;
@@ -75,7 +80,9 @@ int run_check(int argc, char** argv) {
   const auto [shard_begin, shard_end] = batch.shard_range(all_queries);
 
   Totals total;
-  if (!answers)
+  const bool table = !answers && !json;
+  std::string json_items;
+  if (table)
     std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP",
                 "FN", "us/query");
   std::size_t offset = 0;  // global index of the dataset's first query
@@ -105,6 +112,20 @@ int run_check(int argc, char** argv) {
     }
     if (answers) {
       for (char r : result) std::fputs(r ? "1\n" : "0\n", stdout);
+    } else if (json) {
+      char buf[4096];
+      std::snprintf(buf, sizeof buf,
+                    "%s  {\"file\": %s, \"kind\": \"%s\", \"method\": \"%s\", \"queries\": %zu, "
+                    "\"positives\": %zu, \"fp\": %zu, \"fn\": %zu, \"us_per_query\": %.3f, \"stages\": "
+                    "{\"volume_exclusion\": %llu, \"interval\": %llu, \"integer\": %llu, \"exact\": %llu}}",
+                    json_items.empty() ? "" : ",\n", json_string(d.name).c_str(), kind_name(d.kind).c_str(),
+                    method_name(method).c_str(), t.queries, t.positives, t.fp, t.fn,
+                    t.queries ? 1e6 * seconds / t.queries : 0.0,
+                    static_cast<unsigned long long>(stages.volume_exclusion),
+                    static_cast<unsigned long long>(stages.interval),
+                    static_cast<unsigned long long>(stages.integer),
+                    static_cast<unsigned long long>(stages.exact));
+      json_items += buf;
     } else {
       std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", d.name.c_str(), kind_name(d.kind).c_str(),
                   t.queries, t.positives, t.fp, t.fn, t.queries ? 1e6 * seconds / t.queries : 0.0);
@@ -121,7 +142,8 @@ int run_check(int argc, char** argv) {
     total.fn += t.fn;
     total.seconds += t.seconds;
   }
-  if (!answers)
+  if (json) std::printf("[\n%s\n]\n", json_items.c_str());
+  if (table)
     std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", "total", "", total.queries, total.positives,
                 total.fp, total.fn, total.queries ? 1e6 * total.seconds / total.queries : 0.0);
   return kExitOk;

@@ -196,6 +196,23 @@ void parallel_for(std::size_t begin, std::size_t end, unsigned threads,
   if (failure) std::rethrow_exception(failure);
 }
 
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string option_value(int argc, char** argv, int& i) {
   if (i + 1 >= argc) throw UsageError(std::string("option ") + argv[i] + " needs a value");
   return argv[++i];

@@ -66,6 +66,9 @@ inline double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+/// s as a JSON string literal (quotes, backslashes and control characters escaped).
+std::string json_string(const std::string& s);
+
 /// Value of option `--name VALUE` at argv[i] (advances i), or UsageError when missing.
 std::string option_value(int argc, char** argv, int& i);
 
