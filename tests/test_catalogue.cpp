@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "exactccd/exactccd.hpp"
 #include "io/benchmark_csv.hpp"
@@ -157,6 +161,180 @@ TEST(CatalogueContents, HasFortyHandMadeCasesWithUniqueNamesCoveringEveryCategor
   for (const auto& e : ee) (e.collides ? positives : negatives)++;
   EXPECT_GE(positives, 10u);
   EXPECT_GE(negatives, 10u);
+}
+
+/// The entry named `name` in `entries`, or nullptr.
+template <class E>
+const E* find(const std::vector<E>& entries, const std::string& name) {
+  for (const E& e : entries)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+// The required coverage, situation by situation: each needs the named case with that answer
+// (hits and misses side by side). Negative zero coordinates are covered by the parameterized
+// tests above, which run every case again with each zero replaced by -0.0 in the double API.
+TEST(CatalogueContents, CoversEveryRequiredSituationWithHitsAndMisses) {
+  const auto vf = vertex_face_cases();
+  const auto ee = edge_edge_cases();
+  struct Required {
+    const char* situation;
+    const char* name;
+    bool collides;
+  };
+  const Required required[] = {
+      {"vertex through a triangle vertex", "vf_through_vertex_a", true},
+      {"vertex through a triangle vertex", "vf_just_outside_vertex_a", false},
+      {"vertex through a triangle edge", "vf_through_edge_ab", true},
+      {"vertex through a triangle edge", "vf_through_edge_bc", true},
+      {"vertex through a triangle edge", "vf_just_outside_edge_bc", false},
+      {"vertex through the interior", "vf_interior_fall", true},
+      {"grazing double root inside", "vf_grazing_inside", true},
+      {"grazing double root outside", "vf_grazing_outside", false},
+      {"grazing double root inside", "ee_grazing_inside", true},
+      {"grazing double root outside", "ee_grazing_outside", false},
+      {"coplanar sliding into contact mid-step", "vf_coplanar_slide_into", true},
+      {"coplanar sliding beside", "vf_coplanar_slide_beside", false},
+      {"coplanar sliding, the triangle moves", "vf_coplanar_triangle_sweeps_over_point", true},
+      {"coplanar sliding into contact mid-step", "ee_coplanar_slide_into", true},
+      {"coplanar sliding beside", "ee_coplanar_slide_beside", false},
+      {"collinear triangle", "vf_collinear_triangle_hit", true},
+      {"collinear triangle", "vf_collinear_triangle_miss", false},
+      {"two coincident triangle vertices", "vf_coincident_vertices_hit", true},
+      {"two coincident triangle vertices", "vf_coincident_vertices_miss", false},
+      {"three coincident triangle vertices", "vf_point_triangle_hit", true},
+      {"three coincident triangle vertices", "vf_point_triangle_miss", false},
+      {"parallel edges, disjoint", "ee_parallel_static_apart", false},
+      {"parallel edges, disjoint", "ee_parallel_skew_static", false},
+      {"parallel edges touching when collinear", "ee_parallel_becoming_collinear_overlap", true},
+      {"parallel edges collinear but disjoint", "ee_parallel_becoming_collinear_disjoint", false},
+      {"collinear overlapping", "ee_collinear_overlap_static", true},
+      {"collinear disjoint", "ee_collinear_disjoint_static", false},
+      {"crossing edges", "ee_crossing", true},
+      {"crossing edges", "ee_pass_beside", false},
+      {"endpoint to endpoint", "ee_endpoint_to_endpoint", true},
+      {"endpoint to endpoint", "ee_endpoint_misses_endpoint", false},
+      {"T-junction", "ee_t_junction", true},
+      {"zero-length edge against an edge", "ee_point_hits_edge", true},
+      {"zero-length edge against an edge", "ee_point_misses_edge", false},
+      {"both edges zero length", "ee_points_meet", true},
+      {"both edges zero length", "ee_points_miss", false},
+      {"contact exactly at t = 0", "vf_contact_at_t0", true},
+      {"contact exactly at t = 0", "ee_contact_at_t0", true},
+      {"contact exactly at t = 1", "vf_contact_at_t1", true},
+      {"contact exactly at t = 1", "ee_contact_at_t1", true},
+      {"just missing at t = 1", "vf_just_misses_at_t1", false},
+      {"just missing at t = 1", "ee_just_misses_at_t1", false},
+      {"nothing moves, touching", "vf_static_touching", true},
+      {"nothing moves, apart", "vf_static_apart", false},
+      {"nothing moves, touching", "ee_static_crossing", true},
+      {"nothing moves, apart", "ee_static_skew", false},
+      {"subnormal coordinates", "vf_subnormal_crossing", true},
+      {"subnormal gap of 2^-1074, no contact", "vf_subnormal_gap_at_t1", false},
+      {"subnormal coordinates", "ee_subnormal_crossing", true},
+      {"subnormal gap of 2^-1074, no contact", "ee_subnormal_gap_at_t1", false},
+      {"subnormal copy", "vf_interior_fall_x2^-1060", true},
+      {"subnormal copy", "ee_crossing_x2^-1060", true},
+      {"1e300-scale coordinates", "vf_grazing_inside_x2^996", true},
+      {"1e300-scale coordinates", "vf_grazing_outside_x2^996", false},
+      {"1e300-scale coordinates", "ee_collinear_overlap_static_x2^996", true},
+      {"1e300-scale coordinates", "ee_endpoint_misses_endpoint_x2^996", false},
+      {"irrational TOI (irreducible cubic)", "vf_irrational_toi", true},
+      {"irrational TOI (irreducible cubic)", "ee_irrational_toi", true},
+  };
+  for (const Required& r : required) {
+    SCOPED_TRACE(std::string(r.situation) + ": " + r.name);
+    const std::string name = r.name;
+    std::optional<bool> collides;
+    if (const auto* e = find(vf, name)) collides = e->collides;
+    if (const auto* e = find(ee, name)) collides = e->collides;
+    ASSERT_TRUE(collides.has_value()) << "missing";
+    EXPECT_EQ(*collides, r.collides);
+  }
+  // Mid-step contact in coplanar sliding: the TOI is strictly inside (0, 1).
+  for (const char* name : {"vf_coplanar_slide_into", "vf_coplanar_triangle_sweeps_over_point"}) {
+    const auto* e = find(vf, name);
+    ASSERT_NE(e, nullptr) << name;
+    ASSERT_TRUE(e->toi.has_value()) << name;
+    EXPECT_TRUE(*e->toi > 0 && *e->toi < 1) << name;
+  }
+  const auto* e = find(ee, "ee_coplanar_slide_into");
+  ASSERT_NE(e, nullptr);
+  ASSERT_TRUE(e->toi.has_value());
+  EXPECT_TRUE(*e->toi > 0 && *e->toi < 1);
+  // The irrational cases collide (checked above) with no rational TOI.
+  const auto* vf_irrational = find(vf, "vf_irrational_toi");
+  const auto* ee_irrational = find(ee, "ee_irrational_toi");
+  ASSERT_NE(vf_irrational, nullptr);
+  ASSERT_NE(ee_irrational, nullptr);
+  EXPECT_FALSE(vf_irrational->toi.has_value());
+  EXPECT_FALSE(ee_irrational->toi.has_value());
+}
+
+/// Each entry's fields agree with one another: coordinates exactly doubles, a TOI (rational in
+/// [0, 1], or a polynomial for an irrational root) exactly when it collides.
+template <class E>
+void expect_consistent(const E& e) {
+  SCOPED_TRACE(e.name);
+  EXPECT_FALSE(e.name.empty());
+  EXPECT_FALSE(e.category.empty());
+  for (char ch : e.name)
+    EXPECT_TRUE(std::islower(static_cast<unsigned char>(ch)) ||
+                std::isdigit(static_cast<unsigned char>(ch)) || ch == '_' || ch == '^' || ch == '-')
+        << "not a snake_case id";
+  for (const auto& p : rows(e.query))
+    for (const mpq_class* x : {&p.x, &p.y, &p.z}) {
+      const auto d = io::exact_double(*x);
+      ASSERT_TRUE(d.has_value()) << x->get_str() << " is not exactly a double";
+      EXPECT_TRUE(std::isfinite(*d));
+    }
+  if (!e.collides) {
+    EXPECT_FALSE(e.toi.has_value()) << "a TOI on a miss";
+    EXPECT_TRUE(e.toi_polynomial.empty());
+    return;
+  }
+  EXPECT_NE(e.toi.has_value(), !e.toi_polynomial.empty())
+      << "a hit needs exactly one of a rational TOI and an irrational root's polynomial";
+  if (e.toi) {
+    EXPECT_GE(*e.toi, 0);
+    EXPECT_LE(*e.toi, 1);
+  }
+  if (!e.toi_polynomial.empty()) {
+    EXPECT_EQ(e.toi_polynomial.size(), 4u) << "a cubic";
+    EXPECT_NE(e.toi_polynomial.back(), 0);
+  }
+}
+
+TEST(CatalogueContents, EntriesAreConsistent) {
+  for (const auto& e : vertex_face_cases()) expect_consistent(e);
+  for (const auto& e : edge_edge_cases()) expect_consistent(e);
+}
+
+/// Every hand-made case (but the subnormal ones) has its exact 2^996 copy, with the same
+/// answer and TOI: coordinates up to a few times 1e300 stay exact doubles.
+template <class E>
+void expect_huge_copies(const std::vector<E>& base, const std::vector<E>& all) {
+  for (const E& b : base) {
+    if (b.category == "subnormal") continue;
+    const E* copy = find(all, b.name + "_x2^996");
+    ASSERT_NE(copy, nullptr) << b.name << " has no 2^996 copy";
+    EXPECT_EQ(copy->collides, b.collides) << b.name;
+    EXPECT_EQ(copy->toi, b.toi) << b.name;
+    const auto rb = rows(b.query);
+    const auto rc = rows(copy->query);
+    for (std::size_t i = 0; i < 8; ++i) {
+      mpq_class scale(1);
+      mpq_mul_2exp(scale.get_mpq_t(), scale.get_mpq_t(), 996);
+      EXPECT_EQ(rc[i].x, rb[i].x * scale);
+      EXPECT_EQ(rc[i].y, rb[i].y * scale);
+      EXPECT_EQ(rc[i].z, rb[i].z * scale);
+    }
+  }
+}
+
+TEST(CatalogueContents, EveryCaseHasAnExactHugeCopy) {
+  expect_huge_copies(vertex_face_base_cases(), vertex_face_cases());
+  expect_huge_copies(edge_edge_base_cases(), edge_edge_cases());
 }
 
 }  // namespace
