@@ -11,6 +11,9 @@
 // Exact oracles never answer kUnknownSign, and then the rule is plain Boolean logic.
 #pragma once
 
+#include <type_traits>
+#include <utility>
+
 #include "contact/contact_polynomials.hpp"
 
 namespace exactccd::contact {
@@ -57,8 +60,8 @@ Truth any_of(Fs&&... operands) {
 }
 
 /// The point lies on the closed segment (see PointOnSegmentPolys).
-template <class NT, class SignOracle>
-Truth point_on_segment(const PointOnSegmentPolys<NT>& s, SignOracle&& sign) {
+template <class PointOnSegment, class SignOracle>
+Truth point_on_segment(const PointOnSegment& s, SignOracle&& sign) {
   return all_of([&] { return is_zero_sign(sign(s.cross.x)); },
                 [&] { return is_zero_sign(sign(s.cross.y)); },
                 [&] { return is_zero_sign(sign(s.cross.z)); },
@@ -66,9 +69,9 @@ Truth point_on_segment(const PointOnSegmentPolys<NT>& s, SignOracle&& sign) {
 }
 
 /// The vector polynomial is nonzero at the time examined.
-template <class NT, class SignOracle>
-Truth is_nonzero(const PolyVec3<NT, 2>& v, SignOracle&& sign) {
-  const auto nonzero = [&](const Poly<NT, 2>& p) {
+template <class Vector, class SignOracle>
+Truth is_nonzero(const Vector& v, SignOracle&& sign) {
+  const auto nonzero = [&](const auto& p) {
     const int s = sign(p);
     return s == kUnknownSign ? Truth::unknown : truth(s != 0);
   };
@@ -92,8 +95,8 @@ Truth branch(Truth condition, Then&& if_yes, Else&& if_no) {
 ///   n . (e_i x (p - v_i)) = |n|^2 lambda_i are all >= 0;
 /// - degenerate triangle (n == 0: a, b, c collinear or coincident): the hull is the union of
 ///   the three closed segments ab, bc, ca.
-template <class NT, class SignOracle>
-Truth vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
+template <class Polys, class SignOracle>
+Truth vertex_face_in_plane_contact(const Polys& P, SignOracle&& sign) {
   return branch(
       is_nonzero(P.normal(), sign),
       [&] {
@@ -113,8 +116,8 @@ Truth vertex_face_in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& si
 ///   alpha = U / D, beta = W / D; contact iff both lie in [0, 1];
 /// - parallel, collinear or zero-length (w == 0): the segments meet iff an endpoint of one lies
 ///   on the other (the intersection of two collinear segments is bounded by such endpoints).
-template <class NT, class SignOracle>
-Truth edge_edge_in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
+template <class Polys, class SignOracle>
+Truth edge_edge_in_plane_contact(const Polys& P, SignOracle&& sign) {
   return branch(
       is_nonzero(P.direction_cross(), sign),
       [&] {
@@ -131,14 +134,21 @@ Truth edge_edge_in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) 
       });
 }
 
-/// The in-plane part of the contact rule, chosen by overload.
-template <class NT, class SignOracle>
-Truth in_plane_contact(const VertexFacePolys<NT>& P, SignOracle&& sign) {
-  return vertex_face_in_plane_contact(P, sign);
-}
-template <class NT, class SignOracle>
-Truth in_plane_contact(const EdgeEdgePolys<NT>& P, SignOracle&& sign) {
-  return edge_edge_in_plane_contact(P, sign);
+/// True for a vertex-face polynomial set (anything with normal(), barycentric(i) and
+/// on_edge(i): VertexFacePolys or an adapter with the same accessors).
+template <class Polys, class = void>
+struct is_vertex_face_polys : std::false_type {};
+template <class Polys>
+struct is_vertex_face_polys<Polys, std::void_t<decltype(std::declval<const Polys&>().normal())>>
+    : std::true_type {};
+
+/// The in-plane part of the contact rule, chosen by the kind of the polynomial set.
+template <class Polys, class SignOracle>
+Truth in_plane_contact(const Polys& P, SignOracle&& sign) {
+  if constexpr (is_vertex_face_polys<Polys>::value)
+    return vertex_face_in_plane_contact(P, sign);
+  else
+    return edge_edge_in_plane_contact(P, sign);
 }
 
 /// The whole contact rule at one time: the volume vanishes (the four points are coplanar)

@@ -18,9 +18,12 @@
 //   because q(r) != 0 and q is continuous.
 #include "filter/integer_stage.hpp"
 
+#include <CGAL/Interval_nt.h>
+
 #include <climits>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -80,15 +83,115 @@ struct Candidate {
   const IntegerPoly* defining = nullptr;  // unused when root.exact
 };
 
-/// Exact sign oracle at a candidate; refines the candidate's cell as it goes.
+using Interval = CGAL::Interval_nt<false>;  // only under Protect_FPU_rounding
+
+/// A polynomial of the rule seen twice: its interval version (from the double query, built
+/// up front) and a thunk building its exact integer version on first need. Most signs are
+/// certain in intervals over the candidate's (narrow) cell; only the others cost GMP work.
+template <int D>
+struct DualPoly {
+  const contact::Poly<Interval, D>* approx;
+  std::function<const contact::Poly<Integer, D>&()> exact;
+};
+
+template <int D, class Exact>
+DualPoly<D> dual(const contact::Poly<Interval, D>& approx, Exact&& exact) {
+  return {&approx, std::forward<Exact>(exact)};
+}
+
+/// "Point on segment" polynomials as duals (see contact::PointOnSegmentPolys).
+struct DualSegment {
+  Vec3T<DualPoly<2>> cross;
+  DualPoly<2> dot;
+};
+
+/// The accessors of VertexFacePolys / EdgeEdgePolys over pairs (interval, exact): the contact
+/// rule runs on this unchanged (it is generic over the polynomial set).
+struct DualVertexFace {
+  const contact::VertexFacePolys<Interval>& I;
+  const contact::VertexFacePolys<Integer>& Z;
+  Vec3T<DualPoly<2>> normal() const {
+    const auto& n = I.normal();
+    const auto* z = &Z;
+    return {dual(n.x, [z]() -> const auto& { return z->normal().x; }),
+            dual(n.y, [z]() -> const auto& { return z->normal().y; }),
+            dual(n.z, [z]() -> const auto& { return z->normal().z; })};
+  }
+  DualPoly<4> barycentric(int i) const {
+    const auto* z = &Z;
+    return dual(I.barycentric(i), [z, i]() -> const auto& { return z->barycentric(i); });
+  }
+  DualSegment on_edge(int i) const {
+    const auto& s = I.on_edge(i);
+    const auto* z = &Z;
+    return {{dual(s.cross.x, [z, i]() -> const auto& { return z->on_edge(i).cross.x; }),
+             dual(s.cross.y, [z, i]() -> const auto& { return z->on_edge(i).cross.y; }),
+             dual(s.cross.z, [z, i]() -> const auto& { return z->on_edge(i).cross.z; })},
+            dual(s.dot, [z, i]() -> const auto& { return z->on_edge(i).dot; })};
+  }
+};
+
+struct DualEdgeEdge {
+  const contact::EdgeEdgePolys<Interval>& I;
+  const contact::EdgeEdgePolys<Integer>& Z;
+  Vec3T<DualPoly<2>> direction_cross() const {
+    const auto& w = I.direction_cross();
+    const auto* z = &Z;
+    return {dual(w.x, [z]() -> const auto& { return z->direction_cross().x; }),
+            dual(w.y, [z]() -> const auto& { return z->direction_cross().y; }),
+            dual(w.z, [z]() -> const auto& { return z->direction_cross().z; })};
+  }
+  DualPoly<4> parameter(int i) const {
+    const auto* z = &Z;
+    return dual(I.parameter(i), [z, i]() -> const auto& { return z->parameter(i); });
+  }
+  DualSegment endpoint_on_edge(int i) const {
+    const auto& s = I.endpoint_on_edge(i);
+    const auto* z = &Z;
+    return {{dual(s.cross.x, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.x; }),
+             dual(s.cross.y, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.y; }),
+             dual(s.cross.z, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.z; })},
+            dual(s.dot, [z, i]() -> const auto& { return z->endpoint_on_edge(i).dot; })};
+  }
+};
+
+DualVertexFace dual_polys(const contact::VertexFacePolys<Interval>& I,
+                          const contact::VertexFacePolys<Integer>& Z) {
+  return {I, Z};
+}
+DualEdgeEdge dual_polys(const contact::EdgeEdgePolys<Interval>& I, const contact::EdgeEdgePolys<Integer>& Z) {
+  return {I, Z};
+}
+
+/// A double interval holding the dyadic cell [lo, hi] (computed with integer arithmetic: no
+/// dependence on the rounding mode).
+std::pair<double, double> enclosing_doubles(const Dyadic& lo, const Dyadic& hi) {
+  const auto down = [](const Dyadic& d) {  // d >= 0, rounded towards zero
+    long e = 0;
+    const double m = mpz_get_d_2exp(&e, d.a.get_mpz_t());  // truncated mantissa in [0.5, 1)
+    return std::ldexp(m, static_cast<int>(std::max(e - static_cast<long>(d.k), -2000L)));
+  };
+  return {down(lo), std::nextafter(down(hi), 2.0)};
+}
+
+/// Exact sign oracle at a candidate; tries the interval polynomial over the candidate's cell
+/// first, then the exact integer one (refining the cell as it goes).
 struct RootSignOracle {
   Candidate& candidate;
 
   template <int D>
-  int operator()(const contact::Poly<Integer, D>& p) const {
-    const IntegerPoly q = integer_poly(p);
-    if (q.is_zero()) return 0;
+  int operator()(const DualPoly<D>& p) const {
     IsolatedRoot& r = candidate.root;
+    {
+      const auto [lo, hi] = r.exact ? enclosing_doubles(r.at, r.at) : enclosing_doubles(r.lo, r.hi);
+      CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
+      const Interval value = (*p.approx)(Interval(lo, hi));
+      if (value.inf() > 0) return 1;
+      if (value.sup() < 0) return -1;
+      if (value.inf() == 0 && value.sup() == 0) return 0;  // exactly zero on the whole cell
+    }
+    const IntegerPoly q = integer_poly(p.exact());
+    if (q.is_zero()) return 0;
     if (r.exact) return exact::sign_at(q, r.at);
     if (const int s = exact::sign_on_cell(q, r.lo); s != 0) return s;
     const IntegerPoly g = exact::gcd(*candidate.defining, q);
@@ -137,8 +240,8 @@ bool earlier(const TimeInterval& a, const TimeInterval& b) {
   return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
 }
 
-template <class IntegerQuery>
-StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
+template <class IntegerQuery, class Query>
+StageResult integer_stage(const IntegerQuery& q, const Query& double_query, bool want_toi) {
   std::deque<IntegerPoly> defining;  // stable addresses for Candidate::defining
   std::vector<Candidate> candidates;
   const auto add_roots_of = [&](const IntegerPoly& p) {  // returns how many roots it added
@@ -183,9 +286,26 @@ StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
     if (!vector_nowhere_zero) contact::for_each_degenerate_poly(P, add);
   }
 
+  // The interval versions of the rule's polynomials, built up front under the rounding mode
+  // interval arithmetic needs (the dual oracle evaluates them; GMP work is integer-only).
+  using IntervalQuery = std::conditional_t<std::is_same_v<Query, VertexFaceQuery>,
+                                           VertexFaceQueryT<Interval>, EdgeEdgeQueryT<Interval>>;
+  std::array<Vec3T<Interval>, 8> interval_rows;
+  {
+    const auto d = rows(double_query);
+    for (std::size_t i = 0; i < d.size(); ++i)
+      interval_rows[i] = {Interval(d[i].x), Interval(d[i].y), Interval(d[i].z)};
+  }
+  const auto PI = contact::polynomials(from_rows<IntervalQuery>(interval_rows));
+  {
+    CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
+    contact::for_each_in_plane_poly(PI, [](const auto&) {});
+  }
+  const auto dual_set = dual_polys(PI, P);
+
   std::optional<TimeInterval> best;
   for (Candidate& c : candidates) {
-    if (contact::in_plane_contact(P, RootSignOracle{c}) != contact::Truth::yes) continue;  // exact
+    if (contact::in_plane_contact(dual_set, RootSignOracle{c}) != contact::Truth::yes) continue;  // exact
     if (!want_toi) return {Verdict::collision, std::nullopt};
     const TimeInterval t = enclose(c);
     if (!best || earlier(t, *best)) best = t;
@@ -199,7 +319,7 @@ StageResult integer_stage(const IntegerQuery& q, bool want_toi) {
 
 StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi) {
   try {
-    return integer_stage(to_integer_query<VertexFaceQueryT<Integer>>(q), want_toi);
+    return integer_stage(to_integer_query<VertexFaceQueryT<Integer>>(q), q, want_toi);
   } catch (const std::runtime_error&) {  // an internal limit: let the CGAL path decide
     return {};
   }
@@ -207,7 +327,7 @@ StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi) {
 
 StageResult edge_edge_integer_stage(const EdgeEdgeQuery& q, bool want_toi) {
   try {
-    return integer_stage(to_integer_query<EdgeEdgeQueryT<Integer>>(q), want_toi);
+    return integer_stage(to_integer_query<EdgeEdgeQueryT<Integer>>(q), q, want_toi);
   } catch (const std::runtime_error&) {
     return {};
   }
