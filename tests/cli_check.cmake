@@ -1,129 +1,233 @@
-# CLI contract tests for `exactccd check`, run by CTest:
-#   cmake -DEXE=<exactccd> -DDATA=<tests/data> -P cli_check.cmake
-# 1. --answers prints exactly one line per query, 0 or 1, nothing else, and the right answers.
-execute_process(COMMAND ${EXE} check --answers ${DATA}/small-vertex-face.csv
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "check --answers exited with ${rc}: ${err}")
-endif()
-if(NOT out STREQUAL "1\n0\n")
-  message(FATAL_ERROR "check --answers printed '${out}', expected '1\\n0\\n'")
-endif()
-# 2. A malformed line is an error naming file and line, with exit code 2 and nothing on stdout.
-execute_process(COMMAND ${EXE} check --answers ${DATA}/malformed-vertex-face.csv
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "malformed input: exit code ${rc}, expected 2")
-endif()
-if(NOT err MATCHES "malformed-vertex-face.csv:5:")
-  message(FATAL_ERROR "malformed input: stderr '${err}' does not name file and line 5")
-endif()
-if(NOT out STREQUAL "")
-  message(FATAL_ERROR "malformed input: stdout not empty: '${out}'")
-endif()
-# 3. The kind cannot be inferred from this path without --kind.
-execute_process(COMMAND ${EXE} check ${DATA}/../cli_check.cmake RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "uninferable kind: exit code ${rc}, expected 2")
-endif()
-# 4. Every method answers the same on this small exact data; naive too here.
-foreach(method filtered exact naive)
-  execute_process(COMMAND ${EXE} check --method ${method} --answers ${DATA}/small-vertex-face.csv
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+# CLI contract tests of the exactccd program, one CTest test per case (CMakeLists.txt):
+#   cmake -DEXE=<exactccd> -DDATA=<tests/data> -DWORK=<scratch dir> -DCASE=<case> -P cli_check.cmake
+# Scratch files go to WORK (in the build tree), never to the source tree.
+foreach(var EXE DATA WORK CASE)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "cli_check.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+set(small ${DATA}/small-vertex-face.csv)
+set(data_root ${DATA}/../../data)
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+# Runs the program; sets rc, out and err in the caller.
+macro(run)
+  execute_process(COMMAND ${EXE} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+endmacro()
+
+# Fails unless the last run exited with `code` and printed nothing on stdout.
+macro(expect_error code what)
+  if(NOT rc EQUAL ${code})
+    message(FATAL_ERROR "${what}: exit code ${rc}, expected ${code}\nstderr: ${err}")
+  endif()
+  if(NOT out STREQUAL "")
+    message(FATAL_ERROR "${what}: stdout must be empty, got '${out}'")
+  endif()
+endmacro()
+
+if(CASE STREQUAL "check_answers")
+  # --answers prints exactly one line per query, 0 or 1, nothing else, and the right answers;
+  # several files give their lines one after the other.
+  run(check --answers ${small})
   if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n0\n")
-    message(FATAL_ERROR "--method ${method}: exit ${rc}, output '${out}'")
+    message(FATAL_ERROR "check --answers: exit ${rc}, printed '${out}', expected '1\\n0\\n'\n${err}")
   endif()
-endforeach()
-# 5. --threads gives the same answers; --shard I/N splits the queries into contiguous blocks.
-execute_process(COMMAND ${EXE} check --threads 3 --answers ${DATA}/small-vertex-face.csv
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out)
-if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n0\n")
-  message(FATAL_ERROR "--threads 3: exit ${rc}, output '${out}'")
-endif()
-execute_process(COMMAND ${EXE} check --shard 0/2 --answers ${DATA}/small-vertex-face.csv OUTPUT_VARIABLE s0)
-execute_process(COMMAND ${EXE} check --shard 1/2 --answers ${DATA}/small-vertex-face.csv OUTPUT_VARIABLE s1)
-if(NOT s0 STREQUAL "1\n" OR NOT s1 STREQUAL "0\n")
-  message(FATAL_ERROR "--shard: got '${s0}' and '${s1}'")
-endif()
-execute_process(COMMAND ${EXE} check --shard 2/2 ${DATA}/small-vertex-face.csv RESULT_VARIABLE rc)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "--shard 2/2 must be a usage error, exit ${rc}")
-endif()
-# 6. bench --json writes one object per (dataset, method) with the documented keys.
-execute_process(COMMAND ${EXE} bench --repetitions 1 --json - ${DATA}/small-vertex-face.csv
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_QUIET)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "bench --json: exit ${rc}")
-endif()
-foreach(key dataset kind method queries mean_ns median_ns fp fn exact_fallbacks)
-  string(REGEX MATCHALL "\"${key}\":" found "${out}")
-  list(LENGTH found count)
-  if(NOT count EQUAL 3)
-    message(FATAL_ERROR "bench --json: key ${key} appears ${count} times, expected 3:\n${out}")
+  run(check --answers ${small} ${small})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n0\n1\n0\n")
+    message(FATAL_ERROR "check --answers on two files: exit ${rc}, printed '${out}'")
   endif()
-endforeach()
-# 7. Every subcommand answers --help with exit code 0.
-foreach(sub check bench compare generate stability)
-  execute_process(COMMAND ${EXE} ${sub} --help RESULT_VARIABLE rc OUTPUT_VARIABLE out)
-  if(NOT rc EQUAL 0 OR NOT out MATCHES "usage: exactccd ${sub}")
-    message(FATAL_ERROR "${sub} --help: exit ${rc}")
+
+elseif(CASE STREQUAL "check_table")
+  # The default output: a header, one row per file (queries, positives, FP, FN, us/query), a total.
+  run(check ${small} ${small})
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "check: exit ${rc}\n${err}")
   endif()
-endforeach()
-# 8. The committed catalogue CSVs are what `generate catalogue` writes now (no stale data).
-set(gen ${DATA}/../../build-generate-check)
-file(REMOVE_RECURSE ${gen})
-execute_process(COMMAND ${EXE} generate catalogue --out ${gen} RESULT_VARIABLE rc OUTPUT_QUIET)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "generate catalogue: exit ${rc}")
-endif()
-foreach(kind vertex-face edge-edge)
-  file(READ ${gen}/catalogue-${kind}.csv fresh)
-  file(READ ${DATA}/../../data/catalogue/catalogue-${kind}.csv committed)
-  if(NOT fresh STREQUAL committed)
-    message(FATAL_ERROR "data/catalogue/catalogue-${kind}.csv is stale: run exactccd generate catalogue --out data/catalogue")
+  string(REGEX MATCHALL "small-vertex-face.csv +vf +2 +1 +0 +0 +[0-9.]+\n" rows "${out}")
+  list(LENGTH rows n)
+  if(NOT n EQUAL 2 OR NOT out MATCHES "^file +kind +queries +positives +FP +FN +us/query\n"
+     OR NOT out MATCHES "\ntotal +4 +2 +0 +0 +[0-9.]+\n$")
+    message(FATAL_ERROR "check: unexpected table\n${out}")
   endif()
-endforeach()
-file(REMOVE_RECURSE ${gen})
-# 9. The bundled catalogue: the exact answers match its hand-derived truth column.
-execute_process(COMMAND ${EXE} check ${DATA}/../../data/catalogue/catalogue-vertex-face.csv
-                        ${DATA}/../../data/catalogue/catalogue-edge-edge.csv
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out)
-if(NOT rc EQUAL 0 OR NOT out MATCHES "total +297 +187 +0 +0 ")
-  message(FATAL_ERROR "check on the catalogue: exit ${rc}\n${out}")
-endif()
-# 10. stability writes the documented CSV; the exact methods have no error.
-execute_process(COMMAND ${EXE} stability --families vf_vertex_through_edge,ee_parallel --k-min 40 --k-max 44
-                        --instances 4 --methods naive,filtered,exact
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out)
-if(NOT rc EQUAL 0 OR NOT out MATCHES "^family,kind,method,k,queries,fp,fn,fp_rate,fn_rate\n")
-  message(FATAL_ERROR "stability: exit ${rc}\n${out}")
-endif()
-string(REGEX MATCHALL "\n[a-z_]+,(vf|ee),(filtered|exact),-?[0-9]+,4,[0-9]+,[0-9]+" exact_rows "${out}")
-list(LENGTH exact_rows n)
-if(NOT n EQUAL 24)
-  message(FATAL_ERROR "stability: expected 24 filtered/exact rows, found ${n}\n${out}")
-endif()
-foreach(row IN LISTS exact_rows)
-  if(NOT row MATCHES ",4,0,0$")
-    message(FATAL_ERROR "stability: an exact method erred: ${row}")
+
+elseif(CASE STREQUAL "check_malformed")
+  # A malformed line: file and line on stderr, exit code 2, nothing on stdout, even when a good
+  # file comes first.
+  run(check --answers ${small} ${DATA}/malformed-vertex-face.csv)
+  expect_error(2 "malformed input")
+  if(NOT err MATCHES "malformed-vertex-face.csv:5: ")
+    message(FATAL_ERROR "malformed input: stderr '${err}' does not name file and line 5")
   endif()
-endforeach()
-# 11. compare counts FP and FN against the exact answers, with indices and categories.
-set(theirs ${DATA}/../../build-compare-answers.txt)
-file(WRITE ${theirs} "0\n1\n")
-execute_process(COMMAND ${EXE} compare --answers ${theirs} ${DATA}/small-vertex-face.csv
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out)
-if(NOT rc EQUAL 0 OR NOT out STREQUAL "queries 2, false positives 1, false negatives 1\n0 FN generic\n1 FP generic\n")
-  message(FATAL_ERROR "compare: exit ${rc}, output:\n${out}")
+  # A row count that is not a multiple of 8 names the last row.
+  file(STRINGS ${small} lines)
+  list(SUBLIST lines 0 9 nine)
+  list(JOIN nine "\n" text)
+  file(WRITE ${WORK}/short-vertex-face.csv "${text}\n")
+  run(check ${WORK}/short-vertex-face.csv)
+  expect_error(2 "9 rows")
+  if(NOT err MATCHES "short-vertex-face.csv:9: incomplete query")
+    message(FATAL_ERROR "9 rows: stderr '${err}'")
+  endif()
+
+elseif(CASE STREQUAL "check_usage_errors")
+  # Exit code 2 and a message for every usage error.
+  run(check ${DATA}/../cli_check.cmake)  # the kind cannot be inferred from this path
+  expect_error(2 "uninferable kind")
+  if(NOT err MATCHES "--kind")
+    message(FATAL_ERROR "uninferable kind: stderr '${err}' does not mention --kind")
+  endif()
+  run(check ${WORK}/no-such-vertex-face.csv)
+  expect_error(2 "missing file")
+  run(check --no-such-option ${small})
+  expect_error(2 "unknown option")
+  run(check --method no-such-method ${small})
+  expect_error(2 "unknown method")
+  run(check --kind xx ${small})
+  expect_error(2 "unknown kind")
+  run(check)
+  expect_error(2 "no input file")
+  run(no-such-subcommand)
+  expect_error(2 "unknown subcommand")
+  run(check --shard 2/2 ${small})
+  expect_error(2 "--shard 2/2")
+
+elseif(CASE STREQUAL "check_kind")
+  # --kind overrides the path. Read as edge-edge, the same rows give other answers: edge
+  # (p, a) never reaches edge (b, c) in query 0 and meets it at t = 1/2 in query 1.
+  file(COPY ${small} DESTINATION ${WORK})
+  file(RENAME ${WORK}/small-vertex-face.csv ${WORK}/small.csv)
+  run(check --kind vf --answers ${WORK}/small.csv)
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n0\n")
+    message(FATAL_ERROR "--kind vf: exit ${rc}, output '${out}'\n${err}")
+  endif()
+  run(check --kind ee --answers ${WORK}/small.csv)
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "0\n1\n")
+    message(FATAL_ERROR "--kind ee: exit ${rc}, output '${out}', expected '0\\n1\\n'\n${err}")
+  endif()
+  # The occurrence nearest the file name wins.
+  file(MAKE_DIRECTORY ${WORK}/edge-edge)
+  file(COPY ${small} DESTINATION ${WORK}/edge-edge)
+  run(check ${WORK}/edge-edge/small-vertex-face.csv)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "small-vertex-face.csv +vf ")
+    message(FATAL_ERROR "kind from the file name: exit ${rc}\n${out}${err}")
+  endif()
+
+elseif(CASE STREQUAL "check_methods")
+  # Every method answers the same on this small exact data; naive too here.
+  foreach(method filtered exact naive)
+    run(check --method ${method} --answers ${small})
+    if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n0\n")
+      message(FATAL_ERROR "--method ${method}: exit ${rc}, output '${out}'\n${err}")
+    endif()
+  endforeach()
+
+elseif(CASE STREQUAL "check_batch")
+  # --threads gives the same answers; --shard I/N splits the queries into contiguous blocks.
+  run(check --threads 3 --answers ${small})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n0\n")
+    message(FATAL_ERROR "--threads 3: exit ${rc}, output '${out}'")
+  endif()
+  run(check --shard 0/2 --answers ${small})
+  set(s0 "${out}")
+  run(check --shard 1/2 --answers ${small})
+  if(NOT s0 STREQUAL "1\n" OR NOT out STREQUAL "0\n")
+    message(FATAL_ERROR "--shard: got '${s0}' and '${out}'")
+  endif()
+
+elseif(CASE STREQUAL "check_json")
+  # check --json: one object per file with the documented keys.
+  run(check --json ${small})
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "\"queries\": 2, \"positives\": 1, \"fp\": 0, \"fn\": 0")
+    message(FATAL_ERROR "check --json: exit ${rc}\n${out}")
+  endif()
+  run(check --json --answers ${small})
+  expect_error(2 "--json with --answers")
+
+elseif(CASE STREQUAL "check_catalogue")
+  # The bundled catalogue: the exact answers match its hand-derived truth column.
+  run(check ${data_root}/catalogue/catalogue-vertex-face.csv
+            ${data_root}/catalogue/catalogue-edge-edge.csv)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "total +297 +187 +0 +0 ")
+    message(FATAL_ERROR "check on the catalogue: exit ${rc}\n${out}")
+  endif()
+
+elseif(CASE STREQUAL "catalogue_fresh")
+  # The committed catalogue CSVs are what `generate catalogue` writes now (no stale data).
+  run(generate catalogue --out ${WORK})
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "generate catalogue: exit ${rc}\n${err}")
+  endif()
+  foreach(kind vertex-face edge-edge)
+    file(READ ${WORK}/catalogue-${kind}.csv fresh)
+    file(READ ${data_root}/catalogue/catalogue-${kind}.csv committed)
+    if(NOT fresh STREQUAL committed)
+      message(FATAL_ERROR "data/catalogue/catalogue-${kind}.csv is stale: run exactccd generate catalogue --out data/catalogue")
+    endif()
+  endforeach()
+
+elseif(CASE STREQUAL "bench_json")
+  # bench --json writes one object per (dataset, method) with the documented keys.
+  run(bench --repetitions 1 --json - ${small})
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "bench --json: exit ${rc}\n${err}")
+  endif()
+  foreach(key dataset kind method queries mean_ns median_ns fp fn exact_fallbacks)
+    string(REGEX MATCHALL "\"${key}\":" found "${out}")
+    list(LENGTH found count)
+    if(NOT count EQUAL 3)
+      message(FATAL_ERROR "bench --json: key ${key} appears ${count} times, expected 3:\n${out}")
+    endif()
+  endforeach()
+
+elseif(CASE STREQUAL "stability")
+  # stability writes the documented CSV; the exact methods have no error.
+  run(stability --families vf_vertex_through_edge,ee_parallel --k-min 40 --k-max 44
+                --instances 4 --methods naive,filtered,exact)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "^family,kind,method,k,queries,fp,fn,fp_rate,fn_rate\n")
+    message(FATAL_ERROR "stability: exit ${rc}\n${out}")
+  endif()
+  string(REGEX MATCHALL "\n[a-z_]+,(vf|ee),(filtered|exact),-?[0-9]+,4,[0-9]+,[0-9]+" exact_rows "${out}")
+  list(LENGTH exact_rows n)
+  if(NOT n EQUAL 24)
+    message(FATAL_ERROR "stability: expected 24 filtered/exact rows, found ${n}\n${out}")
+  endif()
+  foreach(row IN LISTS exact_rows)
+    if(NOT row MATCHES ",4,0,0$")
+      message(FATAL_ERROR "stability: an exact method erred: ${row}")
+    endif()
+  endforeach()
+
+elseif(CASE STREQUAL "compare")
+  # compare counts FP and FN against the exact answers, with indices and categories.
+  file(WRITE ${WORK}/theirs.txt "0\n1\n")
+  run(compare --answers ${WORK}/theirs.txt ${small})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "queries 2, false positives 1, false negatives 1\n0 FN generic\n1 FP generic\n")
+    message(FATAL_ERROR "compare: exit ${rc}, output:\n${out}")
+  endif()
+  file(WRITE ${WORK}/theirs.txt "1\n")
+  run(compare --answers ${WORK}/theirs.txt ${small})
+  expect_error(2 "compare with too few answers")
+
+elseif(CASE STREQUAL "help")
+  # The program and every subcommand answer --help with exit code 0; no arguments is a usage
+  # error that prints the help.
+  run(--help)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "usage: exactccd <subcommand>" OR NOT out MATCHES "exit codes")
+    message(FATAL_ERROR "--help: exit ${rc}\n${out}")
+  endif()
+  foreach(sub check bench compare generate stability)
+    run(${sub} --help)
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "usage: exactccd ${sub}")
+      message(FATAL_ERROR "${sub} --help: exit ${rc}\n${out}")
+    endif()
+  endforeach()
+  run()
+  if(NOT rc EQUAL 2)
+    message(FATAL_ERROR "no arguments: exit ${rc}, expected 2")
+  endif()
+
+else()
+  message(FATAL_ERROR "cli_check.cmake: unknown CASE '${CASE}'")
 endif()
-file(WRITE ${theirs} "1\n")
-execute_process(COMMAND ${EXE} compare --answers ${theirs} ${DATA}/small-vertex-face.csv RESULT_VARIABLE rc ERROR_QUIET)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "compare with too few answers: exit ${rc}, expected 2")
-endif()
-file(REMOVE ${theirs})
-# 12. check --json: one object per file with the documented keys.
-execute_process(COMMAND ${EXE} check --json ${DATA}/small-vertex-face.csv RESULT_VARIABLE rc OUTPUT_VARIABLE out)
-if(NOT rc EQUAL 0 OR NOT out MATCHES "\"queries\": 2, \"positives\": 1, \"fp\": 0, \"fn\": 0")
-  message(FATAL_ERROR "check --json: exit ${rc}\n${out}")
-endif()
+file(REMOVE_RECURSE ${WORK})

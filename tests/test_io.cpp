@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <random>
 #include <sstream>
 
 namespace exactccd::io {
@@ -61,6 +64,41 @@ TEST(ReadBenchmarkCsv, RejectsMalformedLinesNamingTheLine) {
   EXPECT_EQ(error_line(query_rows(1, "x,2,3,4,5,6")), 1);           // not an integer
   EXPECT_EQ(error_line(query_rows(2)), 1);                          // truth not 0/1
   EXPECT_EQ(error_line(query_rows(1) + query_rows(0, "1,2,3,4,5,6,1")), 9);  // 8 fields, line 9
+  EXPECT_EQ(error_line(query_rows(1, "1,2,3,4,5,6,")), 1);          // trailing comma: 8 fields
+  EXPECT_EQ(error_line(query_rows(1, "1,,3,4,5,6")), 1);            // empty field
+  EXPECT_EQ(error_line(query_rows(1, "1 2,2,3,4,5,6")), 1);         // space inside a number
+  EXPECT_EQ(error_line(query_rows(1, "-,2,3,4,5,6")), 1);           // a sign alone
+  EXPECT_EQ(error_line(query_rows(1, "0x1,2,3,4,5,6")), 1);         // not base 10
+  EXPECT_EQ(error_line(query_rows(0) + query_rows(1, "1,2,3,4,5,0")), 9);  // zero z denominator
+}
+
+TEST(ReadBenchmarkCsv, MessageIsSourceLineReason) {
+  std::istringstream in(query_rows(1, "1,0,3,4,5,6"));
+  try {
+    read_benchmark_csv(in, "dir/a.csv");
+    FAIL() << "no ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), "dir/a.csv:1: zero denominator in field 2");
+    EXPECT_EQ(e.source(), "dir/a.csv");
+    EXPECT_EQ(e.line(), 1u);
+  }
+}
+
+TEST(ReadBenchmarkCsv, AcceptsSignsSpacesHugeIntegersAndNoFinalNewline) {
+  std::string text = query_rows(0, " +3 , -6 ,123456789012345678901234567890,1, -0,7 \t");
+  text.pop_back();  // no newline after the last row
+  std::istringstream in(text);
+  const BenchmarkQueries q = read_benchmark_csv(in, "x");
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_EQ(q.rows[0][0].x, mpq_class(-1, 2));
+  EXPECT_EQ(q.rows[0][0].y, mpq_class("123456789012345678901234567890"));
+  EXPECT_EQ(q.rows[0][0].z, 0);
+  EXPECT_FALSE(q.truth[0]);
+}
+
+TEST(ReadBenchmarkCsv, EmptyInputHasNoQueries) {
+  std::istringstream in("\n\r\n");
+  EXPECT_EQ(read_benchmark_csv(in, "x").size(), 0u);
 }
 
 TEST(ReadBenchmarkCsv, RejectsTruthChangingWithinAQuery) {
@@ -71,10 +109,20 @@ TEST(ReadBenchmarkCsv, RejectsTruthChangingWithinAQuery) {
   EXPECT_EQ(error_line(text), 3);
 }
 
-TEST(ReadBenchmarkCsv, RejectsIncompleteQuery) {
+TEST(ReadBenchmarkCsv, RejectsTruthChangingOnTheLastRow) {
+  std::string text = query_rows(0) + query_rows(1);
+  text[text.size() - 2] = '0';  // line 16
+  EXPECT_EQ(error_line(text), 16);
+}
+
+TEST(ReadBenchmarkCsv, RejectsIncompleteQueryNamingItsLastRow) {
   std::string text = query_rows(0);
   text += "1,1,1,1,1,1,0\n";
   EXPECT_EQ(error_line(text), 9);
+  EXPECT_EQ(error_line(text + "\n\n"), 9);  // trailing blank lines do not move the error
+  std::string three_rows = query_rows(1);
+  three_rows.resize(three_rows.find('\n', three_rows.find('\n', three_rows.find('\n') + 1) + 1));
+  EXPECT_EQ(error_line(three_rows), 3);
 }
 
 TEST(WriteBenchmarkCsv, RoundTrips) {
@@ -95,6 +143,125 @@ TEST(WriteBenchmarkCsv, RoundTrips) {
   }
 }
 
+TEST(WriteBenchmarkCsv, WritesCanonicalNumeratorDenominator) {
+  std::istringstream in(query_rows(1, "2,4,-6,-8,0,-5"));
+  std::ostringstream out;
+  write_benchmark_csv(out, read_benchmark_csv(in, "x"));
+  EXPECT_EQ(out.str().substr(0, out.str().find('\n')), "1,2,3,4,0,1,1");
+}
+
+TEST(WriteBenchmarkCsv, RejectsTruthOfAnotherSize) {
+  BenchmarkQueries q;
+  q.rows.resize(2);
+  q.truth = {true};
+  std::ostringstream out;
+  EXPECT_THROW(write_benchmark_csv(out, q), std::invalid_argument);
+}
+
+TEST(QueryHelpers, KeepTheBenchmarkRowOrder) {
+  std::string text;
+  for (int i = 0; i < 8; ++i) text += std::to_string(i) + ",1,0,1,0,1,0\n";
+  std::istringstream in(text);
+  const BenchmarkQueries q = read_benchmark_csv(in, "x");
+  const RationalVertexFaceQuery vf = vertex_face_query(q, 0);
+  EXPECT_EQ(vf.p_t0.x, 0);
+  EXPECT_EQ(vf.c_t0.x, 3);
+  EXPECT_EQ(vf.p_t1.x, 4);
+  EXPECT_EQ(vf.c_t1.x, 7);
+  const RationalEdgeEdgeQuery ee = edge_edge_query(q, 0);
+  EXPECT_EQ(ee.b0_t0.x, 2);
+  EXPECT_EQ(ee.a1_t1.x, 5);
+  EXPECT_EQ(ee.b1_t1.x, 7);
+  EXPECT_THROW(vertex_face_query(q, 1), std::out_of_range);
+}
+
+mpq_class pow2(int e) {
+  mpq_class q(1);
+  if (e >= 0)
+    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+  else
+    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+  return q;
+}
+
+/// True iff the last bit of d's significand is 0 (the raw encoding's lowest bit).
+bool has_even_significand(double d) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &d, sizeof bits);
+  return (bits & 1) == 0;
+}
+
+/// True iff d is the double nearest to x with ties to even (d finite), checked exactly against
+/// both neighbouring doubles.
+::testing::AssertionResult is_nearest(const mpq_class& x, double d) {
+  if (!std::isfinite(d)) return ::testing::AssertionFailure() << "not finite: " << d;
+  const mpq_class err = abs(x - mpq_class(d));
+  for (double n : {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)}) {
+    if (!std::isfinite(n)) continue;
+    const mpq_class other = abs(x - mpq_class(n));
+    if (other < err || (other == err && !has_even_significand(d)))
+      return ::testing::AssertionFailure() << x.get_str() << " -> " << d << ", but " << n << " is nearer";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(NearestDouble, RoundsToNearestTiesToEven) {
+  EXPECT_EQ(nearest_double(mpq_class(1, 10)), 0.1);
+  EXPECT_EQ(nearest_double(mpq_class(-1, 3)), -1.0 / 3.0);
+  EXPECT_EQ(nearest_double(mpq_class(2, 3)), 2.0 / 3.0);
+  EXPECT_EQ(nearest_double(1 + pow2(-53)), 1.0);                             // tie, to even
+  EXPECT_EQ(nearest_double(1 + 3 * pow2(-53)), 1.0 + std::ldexp(1.0, -51));  // tie, to even
+  EXPECT_EQ(nearest_double(1 + pow2(-53) + pow2(-200)), std::nextafter(1.0, 2.0));
+  EXPECT_EQ(nearest_double(mpq_class(0)), 0.0);
+  EXPECT_FALSE(std::signbit(nearest_double(mpq_class(0))));
+}
+
+TEST(NearestDouble, SubnormalsAndUnderflow) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(nearest_double(pow2(-1074)), tiny);
+  EXPECT_EQ(nearest_double(pow2(-1075)), 0.0);                 // tie between 0 and 2^-1074
+  EXPECT_EQ(nearest_double(pow2(-1075) + pow2(-2000)), tiny);  // just above the tie
+  EXPECT_EQ(nearest_double(3 * pow2(-1075)), 2 * tiny);        // tie, to even
+  EXPECT_EQ(nearest_double(-pow2(-1076)), 0.0);
+  EXPECT_TRUE(std::signbit(nearest_double(-pow2(-1076))));     // IEEE: -0 for a negative x
+  EXPECT_EQ(nearest_double(mpq_class(1, 3) * pow2(-1030)), std::ldexp(1.0 / 3.0, -1030));
+  const double min_normal = std::numeric_limits<double>::min();
+  EXPECT_EQ(nearest_double(pow2(-1022) - pow2(-1076)), min_normal);  // rounds up into normals
+}
+
+TEST(NearestDouble, OverflowAndHugeValues) {
+  const double max = std::numeric_limits<double>::max();
+  const mpq_class q_max(max);
+  const mpq_class half_ulp = pow2(970);  // the ulp of DBL_MAX is 2^971
+  EXPECT_EQ(nearest_double(q_max), max);
+  EXPECT_EQ(nearest_double(q_max + half_ulp - pow2(-10)), max);
+  EXPECT_EQ(nearest_double(q_max + half_ulp), HUGE_VAL);  // the tie goes to even: 2^1024
+  EXPECT_EQ(nearest_double(-pow2(5000)), -HUGE_VAL);
+  EXPECT_EQ(nearest_double(mpq_class(1e300)), 1e300);
+  EXPECT_EQ(nearest_double(mpq_class(7) * pow2(1000) / 3), std::ldexp(7.0 / 3.0, 1000));
+}
+
+TEST(NearestDouble, IsNearestOnPseudoRandomRationals) {
+  std::mt19937_64 gen(20240601);
+  std::uniform_int_distribution<int> shift(-1100, 1030);
+  for (int i = 0; i < 3000; ++i) {
+    mpz_class num, den;
+    mpz_set_ui(num.get_mpz_t(), static_cast<unsigned long>(gen() >> 1));
+    num = num * static_cast<unsigned long>(gen() >> 11) + static_cast<unsigned long>(i);
+    den = mpz_class(static_cast<unsigned long>(gen() >> (i % 60))) + 1;
+    mpq_class x(num, den);
+    x.canonicalize();
+    x *= pow2(shift(gen) - 60);
+    if (i % 2) x = -x;
+    const double d = nearest_double(x);
+    if (std::isinf(d)) {
+      EXPECT_GE(abs(x), mpq_class(std::numeric_limits<double>::max()) + pow2(970)) << x.get_str();
+      continue;
+    }
+    ASSERT_TRUE(is_nearest(x, d)) << "i = " << i;
+  }
+}
+
 TEST(ExactDouble, AcceptsExactlyTheDoubles) {
   EXPECT_EQ(exact_double(mpq_class(1, 4)), 0.25);
   EXPECT_FALSE(exact_double(mpq_class(1, 10)).has_value());  // 0.1 is not a double
@@ -111,6 +278,33 @@ TEST(ExactDouble, AcceptsExactlyTheDoubles) {
   mpq_mul_2exp(huge.get_mpq_t(), huge.get_mpq_t(), 1024);  // 2^1024 overflows
   EXPECT_FALSE(exact_double(huge).has_value());
   EXPECT_EQ(exact_double(mpq_class(-0.0)), 0.0);
+  EXPECT_FALSE(std::signbit(*exact_double(mpq_class(-0.0))));  // a rational zero has no sign
+  EXPECT_EQ(exact_double(-mpq_class(1e300)), -1e300);
+  EXPECT_EQ(exact_double(-q_tiny), -tiny);
+  EXPECT_EQ(exact_double(mpq_class(3) * q_tinier), std::nullopt);      // 1.5 * 2^-1074
+  const double max_subnormal = std::numeric_limits<double>::min() - tiny;  // 52 one bits
+  EXPECT_EQ(exact_double(mpq_class(max_subnormal)), max_subnormal);
+  EXPECT_EQ(exact_double(mpq_class(std::numeric_limits<double>::max())),
+            std::numeric_limits<double>::max());
+  EXPECT_EQ(exact_double(pow2(1024) - pow2(970)), std::nullopt);  // between DBL_MAX and 2^1024
+  EXPECT_EQ(exact_double(pow2(53) + 1), std::nullopt);             // 54 significant bits
+  EXPECT_EQ(exact_double(pow2(53) + 2), 9007199254740994.0);
+  EXPECT_EQ(exact_double(mpq_class(1, 10)), std::nullopt);
+}
+
+TEST(ExactDouble, RoundTripsEveryDoubleItTries) {
+  std::mt19937_64 gen(7);
+  for (int i = 0; i < 3000; ++i) {
+    std::uint64_t bits = gen();
+    double d;
+    static_assert(sizeof d == sizeof bits);
+    std::memcpy(&d, &bits, sizeof d);
+    if (!std::isfinite(d)) continue;
+    const auto back = exact_double(mpq_class(d));
+    ASSERT_TRUE(back.has_value()) << d;
+    EXPECT_EQ(*back, d);
+    EXPECT_EQ(nearest_double(mpq_class(d)), d);
+  }
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #include "io/benchmark_csv.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <istream>
+#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -38,11 +40,12 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
   std::array<RationalVec3, 8> current;
   int row_in_query = 0;
   bool query_truth = false;
-  std::size_t line_number = 0, query_first_line = 0;
+  std::size_t line_number = 0, query_first_line = 0, last_row_line = 0;
   std::string line;
   while (std::getline(in, line)) {
     ++line_number;
     if (trim(line).empty()) continue;
+    last_row_line = line_number;
     std::vector<std::string> fields;
     std::stringstream ss(line);
     for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
@@ -83,14 +86,18 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
   }
   if (in.bad()) throw ParseError(source_name, line_number, "read error");
   if (row_in_query != 0)
-    throw ParseError(source_name, line_number,
-                     "incomplete query: " + std::to_string(row_in_query) +
-                         " rows after line " + std::to_string(query_first_line - 1) +
-                         " (a query has 8)");
+    throw ParseError(source_name, last_row_line,
+                     "incomplete query: the input ends after " + std::to_string(row_in_query) +
+                         " of its 8 rows (it starts on line " + std::to_string(query_first_line) +
+                         ")");
   return result;
 }
 
 void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries) {
+  if (queries.truth.size() != queries.rows.size())
+    throw std::invalid_argument("write_benchmark_csv: " + std::to_string(queries.rows.size()) +
+                                " queries but " + std::to_string(queries.truth.size()) +
+                                " truth values");
   for (std::size_t i = 0; i < queries.size(); ++i)
     for (const RationalVec3& p : queries.rows[i]) {
       for (const mpq_class* c : {&p.x, &p.y, &p.z}) out << c->get_num() << ',' << c->get_den() << ',';
@@ -98,10 +105,46 @@ void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries) {
     }
 }
 
+RationalVertexFaceQuery vertex_face_query(const BenchmarkQueries& queries, std::size_t i) {
+  return from_rows<RationalVertexFaceQuery>(queries.rows.at(i));
+}
+
+RationalEdgeEdgeQuery edge_edge_query(const BenchmarkQueries& queries, std::size_t i) {
+  return from_rows<RationalEdgeEdgeQuery>(queries.rows.at(i));
+}
+
+double nearest_double(const mpq_class& x) {
+  const int sign = sgn(x);
+  if (sign == 0) return 0.0;
+  const mpz_class n = abs(x.get_num());
+  const mpz_class& d = x.get_den();
+  // floor(log2 |x|) is bits(n) - bits(d) or one less.
+  long e = static_cast<long>(mpz_sizeinbase(n.get_mpz_t(), 2)) -
+           static_cast<long>(mpz_sizeinbase(d.get_mpz_t(), 2));
+  const bool at_least_2e = e >= 0 ? n >= (d << static_cast<mp_bitcnt_t>(e))
+                                  : (n << static_cast<mp_bitcnt_t>(-e)) >= d;
+  if (!at_least_2e) --e;
+  constexpr long kMaxExponent = 1023, kMinUlpExponent = -1074, kSignificandBits = 53;
+  if (e > kMaxExponent) return sign * std::numeric_limits<double>::infinity();
+  // The exponent of the last significand bit: 52 below the leading bit, or the subnormal ulp.
+  const long u = std::max(e - (kSignificandBits - 1), kMinUlpExponent);
+  mpz_class scaled_num = n, scaled_den = d;
+  if (u >= 0)
+    scaled_den <<= static_cast<mp_bitcnt_t>(u);
+  else
+    scaled_num <<= static_cast<mp_bitcnt_t>(-u);
+  mpz_class m, r;
+  mpz_fdiv_qr(m.get_mpz_t(), r.get_mpz_t(), scaled_num.get_mpz_t(), scaled_den.get_mpz_t());
+  const int half = cmp(r << 1, scaled_den);
+  if (half > 0 || (half == 0 && mpz_odd_p(m.get_mpz_t()))) ++m;
+  // m <= 2^53 is exact in a double; ldexp is exact unless it overflows to infinity (x rounded
+  // up to 2^1024), which is the IEEE result.
+  return std::copysign(std::ldexp(m.get_d(), static_cast<int>(u)), sign);
+}
+
 std::optional<double> exact_double(const mpq_class& x) {
-  const double d = x.get_d();  // truncates towards zero
-  if (!std::isfinite(d)) return std::nullopt;
-  if (mpq_class(d) != x) return std::nullopt;
+  const double d = nearest_double(x);
+  if (!std::isfinite(d) || mpq_class(d) != x) return std::nullopt;
   return d;
 }
 
@@ -112,6 +155,13 @@ std::optional<std::array<Vec3, 8>> exact_double_rows(const std::array<RationalVe
     if (!x || !y || !z) return std::nullopt;
     out[i] = {*x, *y, *z};
   }
+  return out;
+}
+
+std::array<Vec3, 8> nearest_double_rows(const std::array<RationalVec3, 8>& rows) {
+  std::array<Vec3, 8> out;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    out[i] = {nearest_double(rows[i].x), nearest_double(rows[i].y), nearest_double(rows[i].z)};
   return out;
 }
 

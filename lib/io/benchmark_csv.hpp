@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -14,11 +15,15 @@
 
 namespace exactccd::io {
 
-/// A malformed input: what is wrong, where (source name and 1-based line).
+/// A malformed input: what is wrong, where (source name and 1-based line). what() is
+/// "<source>:<line>: <reason>".
 class ParseError : public std::runtime_error {
  public:
+  /// An error in `source` at 1-based `line`; `what` is the reason.
   ParseError(const std::string& source, std::size_t line, const std::string& what);
+  /// The source name given to the reader (usually the file path).
   const std::string& source() const { return source_; }
+  /// The 1-based line of the error.
   std::size_t line() const { return line_; }
 
  private:
@@ -29,24 +34,43 @@ class ParseError : public std::runtime_error {
 /// Queries of one benchmark file: rows[i] are query i's eight points in row order, truth[i]
 /// its published ground truth.
 struct BenchmarkQueries {
-  std::vector<std::array<RationalVec3, 8>> rows;
-  std::vector<bool> truth;
+  std::vector<std::array<RationalVec3, 8>> rows;  ///< eight points per query, in row order
+  std::vector<bool> truth;                        ///< the truth column, one per query
+  /// The number of queries.
   std::size_t size() const { return rows.size(); }
 };
 
 /// Parses a benchmark CSV. Throws ParseError naming source_name and the line on: a wrong
 /// number of columns, a non-integer field, a zero denominator, a truth other than 0/1 or not
-/// repeated on all 8 rows of a query, or a row count that is not a multiple of 8. Tolerates
-/// CR line ends, surrounding spaces and blank lines.
+/// repeated on all 8 rows of a query, or a row count that is not a multiple of 8. Rationals
+/// are canonicalized. Tolerates CR line ends, spaces around fields and blank lines.
 BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name);
 
-/// Writes queries in the benchmark format, each rational as its exact numerator/denominator.
+/// Writes queries in the benchmark format, each rational as its exact canonical
+/// numerator,denominator pair. read_benchmark_csv reads back the same queries. Throws
+/// std::invalid_argument when queries.truth and queries.rows differ in size.
 void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries);
 
-/// The double equal to x, or nullopt when x is not exactly a double.
+/// Query i of `queries` as a rational vertex-face query (rows in benchmark order).
+RationalVertexFaceQuery vertex_face_query(const BenchmarkQueries& queries, std::size_t i);
+
+/// Query i of `queries` as a rational edge-edge query (rows in benchmark order).
+RationalEdgeEdgeQuery edge_edge_query(const BenchmarkQueries& queries, std::size_t i);
+
+/// x rounded to the nearest double, ties to even, as IEEE round-to-nearest does: subnormal
+/// results are rounded at 2^-1074, magnitudes from DBL_MAX + ulp/2 on become +-infinity and
+/// a nonzero x that rounds to zero gives the zero of its sign; x == 0 gives +0. Computed with
+/// GMP integers only (no reliance on mpq_get_d, which truncates).
+double nearest_double(const mpq_class& x);
+
+/// The double equal to x, or nullopt when x is not exactly a double (not dyadic, more than 53
+/// significant bits, below 2^-1074 in its last bit, or of magnitude 2^1024 or more).
 std::optional<double> exact_double(const mpq_class& x);
 
-/// The query in doubles when every coordinate is exactly a double.
+/// The query in doubles when every coordinate is exactly a double, else nullopt.
 std::optional<std::array<Vec3, 8>> exact_double_rows(const std::array<RationalVec3, 8>& rows);
+
+/// Every coordinate rounded to the nearest double (nearest_double).
+std::array<Vec3, 8> nearest_double_rows(const std::array<RationalVec3, 8>& rows);
 
 }  // namespace exactccd::io

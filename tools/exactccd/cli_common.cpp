@@ -20,9 +20,11 @@ QueryKind parse_kind(const std::string& s) {
 std::string kind_name(QueryKind k) { return k == QueryKind::vertex_face ? "vf" : "ee"; }
 
 std::optional<QueryKind> kind_from_path(const std::string& path) {
-  if (path.find("vertex-face") != std::string::npos) return QueryKind::vertex_face;
-  if (path.find("edge-edge") != std::string::npos) return QueryKind::edge_edge;
-  return std::nullopt;
+  // The occurrence nearest the file name wins: "edge-edge/run-vertex-face.csv" is vertex-face.
+  const auto vf = path.rfind("vertex-face"), ee = path.rfind("edge-edge");
+  if (vf == std::string::npos && ee == std::string::npos) return std::nullopt;
+  if (ee == std::string::npos || (vf != std::string::npos && vf > ee)) return QueryKind::vertex_face;
+  return QueryKind::edge_edge;
 }
 
 const std::vector<Method>& all_methods() {
@@ -72,13 +74,6 @@ Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
 
 namespace {
 
-std::array<Vec3, 8> rounded_rows(const std::array<RationalVec3, 8>& rows) {
-  std::array<Vec3, 8> out;
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    out[i] = {rows[i].x.get_d(), rows[i].y.get_d(), rows[i].z.get_d()};
-  return out;
-}
-
 std::optional<TimeInterval> collides_placeholder(bool collides) {
   return collides ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt;
 }
@@ -99,7 +94,7 @@ std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method me
     const auto q = from_rows<RationalEdgeEdgeQuery>(r);
     return want_toi ? edge_edge_toi(q) : collides_placeholder(edge_edge_ccd(q));
   }
-  const std::array<Vec3, 8> rows = exact_rows ? *exact_rows : rounded_rows(d.queries.rows[i]);
+  const std::array<Vec3, 8> rows = exact_rows ? *exact_rows : io::nearest_double_rows(d.queries.rows[i]);
   StageCounters unused;
   StageCounters& c = counters ? *counters : unused;
   if (vf) {

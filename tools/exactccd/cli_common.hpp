@@ -33,7 +33,8 @@ enum class QueryKind { vertex_face, edge_edge };
 QueryKind parse_kind(const std::string& s);
 std::string kind_name(QueryKind k);  ///< "vf" or "ee"
 
-/// The kind named by a path containing "vertex-face" or "edge-edge", if any.
+/// The kind named by a path containing "vertex-face" or "edge-edge", if any; when both occur,
+/// the one nearer the end of the path (the file name over its folders).
 std::optional<QueryKind> kind_from_path(const std::string& path);
 
 /// Every method, baselines first: naive, naive-tolerance, mpfr24, mpfr53, mpfr113, mpfr256,
@@ -57,7 +58,7 @@ struct Dataset {
 Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind);
 
 /// The answer of one method on query i: the TOI when it collides. Rational queries that are
-/// not exact doubles run the exact path (naive rounds them to doubles).
+/// not exact doubles run the exact path (the baselines round them to the nearest doubles).
 std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method method,
                                       StageCounters* counters, bool want_toi);
 
