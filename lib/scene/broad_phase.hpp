@@ -5,7 +5,12 @@
 // between its positions, so every primitive stays in its box for the whole step, and two
 // primitives that touch at some t have overlapping boxes. The bounds are input coordinates
 // themselves (min and max involve no rounding) and overlap is tested with <=, so the test is
-// exact: no margin is needed and no touching pair is dropped.
+// exact: no margin is needed and no touching pair is dropped, not even one that touches only
+// on a box face. (A conservative margin is what a broad phase needs when its bounds are
+// computed, e.g. positions at intermediate times or a minimum separation added: a rounded
+// bound can land inside the true extent and drop a colliding pair, which CCD then never sees.
+// Such an extension must round its bounds outwards or inflate them by a relative and an
+// absolute margin; here there is nothing to round.)
 #pragma once
 
 #include <array>

@@ -1,5 +1,7 @@
 #include "scene/sim_queries.hpp"
 
+#include <algorithm>
+
 namespace exactccd::scene {
 
 VertexFaceQuery vertex_face_query(const MovingMesh& m, int v, int t) {
@@ -22,6 +24,31 @@ StepQueries step_queries(const MovingMesh& mesh) {
   q.edge_edge.reserve(c.edge_edge.size());
   for (const auto& [i, j] : c.edge_edge) q.edge_edge.push_back(edge_edge_query(mesh, edges[i], edges[j]));
   return q;
+}
+
+namespace {
+
+/// Appends `count` evenly spaced elements of `from` (from[k * n / count], k < count <= n).
+void take_evenly(const std::vector<std::size_t>& from, std::size_t count, std::vector<std::size_t>& to) {
+  const std::size_t n = from.size();
+  for (std::size_t k = 0; k < count; ++k) to.push_back(from[k * n / count]);
+}
+
+}  // namespace
+
+std::vector<std::size_t> select_queries(const std::vector<bool>& collides, std::size_t max_queries) {
+  const std::size_t n = collides.size();
+  std::vector<std::size_t> positive, negative, kept;
+  for (std::size_t i = 0; i < n; ++i) (collides[i] ? positive : negative).push_back(i);
+  if (max_queries == 0 || max_queries >= n) {
+    kept.resize(n);
+    for (std::size_t i = 0; i < n; ++i) kept[i] = i;
+    return kept;
+  }
+  take_evenly(positive, std::min(positive.size(), max_queries), kept);
+  take_evenly(negative, max_queries - kept.size(), kept);
+  std::sort(kept.begin(), kept.end());
+  return kept;
 }
 
 }  // namespace exactccd::scene

@@ -18,8 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHelp = R"(usage: exactccd generate catalogue --out DIR
-       exactccd generate sim --scene cloth|strip|fold [--resolution N] [--seed S]
-                             [--max-queries M] --out DIR
+       exactccd generate sim --scene cloth|strip|fold|pile [--resolution N] [--seed S]
+                             [--max-queries M] [--truth filtered|exact] --out DIR
        exactccd generate families [--seed S] [--instances N] [--k-step K] --out DIR
 
 Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).
@@ -34,16 +34,23 @@ Writes query sets in the benchmark CSV format (8 rows per query, exact rationals
   sim         simulation-like queries: the broad-phase candidates of one time step of a
               procedural scene (lib/scene/procedural_scenes.hpp), written to
               DIR/sim-<scene>-vertex-face.csv and DIR/sim-<scene>-edge-edge.csv; the truth
-              column is the exact answer (filtered method, which is exact)
+              column is the exact answer, by the filtered method (exact, fast) unless
+              --truth exact
 
 options:
   --out DIR           output directory (created if missing)
   --scene NAME        cloth (cloth draped over a sphere), strip (tightening helical ribbon),
-                      fold (sheet folding onto itself)
-  --resolution N      scene resolution (default 24)
+                      fold (sheet folding onto itself), pile (boxes and tetrahedra falling
+                      onto the ground and each other)
+  --resolution N      scene resolution, N >= 2 (default 24)
   --seed S            random seed of the scene's noise (default 1); same seed, same file
-  --max-queries M     keep at most M evenly spaced queries per file, in candidate order
-                      (default 1000; 0 = all): the step's natural share of collisions
+  --max-queries M     keep at most M queries per file (default 1000; 0 = all): every
+                      colliding candidate (evenly spaced ones if more than M collide), then
+                      evenly spaced non-colliding ones, in candidate order
+  --truth METHOD      how sim computes the truth column: filtered (default; exact, about a
+                      microsecond per query) or exact (the slow reference path, rational
+                      arithmetic and CGAL's algebraic kernel, ~0.1 ms per query: for small
+                      sets); every candidate is answered, also the ones not kept
   -h, --help          this help
 exit codes: 0 written, 2 bad usage or unwritable output, 1 internal error.
 )";
@@ -59,7 +66,8 @@ io::BenchmarkQueries to_benchmark(const std::vector<E>& entries) {
 }
 
 /// Writes to a temporary file and renames it: a failed run leaves no half-written file.
-void write_atomically(const fs::path& path, const io::BenchmarkQueries& q) {
+void write_atomically(const fs::path& path, const io::BenchmarkQueries& q,
+                      const std::string& note = "") {
   const fs::path tmp = path.string() + ".tmp";
   {
     std::ofstream out(tmp);
@@ -70,24 +78,32 @@ void write_atomically(const fs::path& path, const io::BenchmarkQueries& q) {
   fs::rename(tmp, path);
   std::size_t positives = 0;
   for (bool t : q.truth) positives += t;
-  std::printf("%s: %zu queries, %zu positives\n", path.string().c_str(), q.size(), positives);
+  std::printf("%s: %zu queries, %zu positives%s\n", path.string().c_str(), q.size(), positives,
+              note.c_str());
 }
 
-/// Exact answers of double queries, keeping at most max_queries (0: all) evenly spaced ones in
-/// candidate order, so that the kept set has the step's natural share of collisions.
+/// Answers every query exactly (collides(q)), keeps those scene::select_queries picks
+/// (max_queries 0: all) in their order, and converts them exactly to rationals (a double is
+/// m 2^e: mpq_class holds it as the reduced m 2^max(e,0) / 2^max(-e,0)). `positives_all`
+/// receives the number of colliding queries among all of them.
 template <class Query, class Collides>
-io::BenchmarkQueries subsample(const std::vector<Query>& queries, std::size_t max_queries,
-                               Collides&& collides) {
-  const std::size_t n = queries.size();
-  const std::size_t keep = max_queries == 0 ? n : std::min(n, max_queries);
+io::BenchmarkQueries answer_and_select(const std::vector<Query>& queries, std::size_t max_queries,
+                                       Collides&& collides, std::size_t* positives_all = nullptr) {
+  std::vector<bool> truth(queries.size());
+  std::size_t positives = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const bool c = collides(queries[i]);
+    truth[i] = c;
+    positives += c;
+  }
+  if (positives_all) *positives_all = positives;
   io::BenchmarkQueries out;
-  for (std::size_t k = 0; k < keep; ++k) {
-    const std::size_t i = k * n / keep;  // evenly spaced, increasing, distinct
+  for (std::size_t i : scene::select_queries(truth, max_queries)) {
     std::array<RationalVec3, 8> r;
     const auto d = rows(queries[i]);
     for (int j = 0; j < 8; ++j) r[j] = {mpq_class(d[j].x), mpq_class(d[j].y), mpq_class(d[j].z)};
     out.rows.push_back(r);
-    out.truth.push_back(collides(queries[i]));
+    out.truth.push_back(truth[i]);
   }
   return out;
 }
@@ -100,6 +116,7 @@ int run_generate(int argc, char** argv) {
   std::uint64_t seed = 1;
   std::size_t max_queries = 1000;
   int family_instances = 1, k_step = 4;
+  std::string truth_name = "filtered";
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "-h" || a == "--help") {
@@ -117,6 +134,10 @@ int run_generate(int argc, char** argv) {
       family_instances = std::stoi(option_value(argc, argv, i));
     } else if (a == "--k-step") {
       k_step = std::max(1, std::stoi(option_value(argc, argv, i)));
+    } else if (a == "--truth") {
+      truth_name = option_value(argc, argv, i);
+      if (truth_name != "filtered" && truth_name != "exact")
+        throw UsageError("generate: --truth expects filtered or exact, not '" + truth_name + "'");
     } else if (a == "--max-queries") {
       max_queries = std::stoul(option_value(argc, argv, i));
     } else if (!a.empty() && a[0] == '-') {
@@ -151,12 +172,13 @@ int run_generate(int argc, char** argv) {
         }
     fs::create_directories(out);
     write_atomically(fs::path(out) / "families-vertex-face.csv",
-                     subsample(vf, 0, [](const VertexFaceQuery& x) { return vertex_face_ccd(x); }));
+                     answer_and_select(vf, 0, [](const VertexFaceQuery& x) { return vertex_face_ccd(x); }));
     write_atomically(fs::path(out) / "families-edge-edge.csv",
-                     subsample(ee, 0, [](const EdgeEdgeQuery& x) { return edge_edge_ccd(x); }));
+                     answer_and_select(ee, 0, [](const EdgeEdgeQuery& x) { return edge_edge_ccd(x); }));
     return kExitOk;
   }
-  if (scene_name.empty()) throw UsageError("generate sim: --scene cloth|strip|fold is required");
+  if (scene_name.empty()) throw UsageError("generate sim: --scene cloth|strip|fold|pile is required");
+  const Method truth_method = truth_name == "exact" ? Method::exact : Method::filtered;
   scene::MovingMesh mesh;
   try {
     mesh = scene::procedural_scene(scene_name, resolution, seed);
@@ -167,11 +189,22 @@ int run_generate(int argc, char** argv) {
   std::fprintf(stderr, "scene %s: %zu vertices, %zu triangles, %zu VF and %zu EE candidates\n",
                scene_name.c_str(), mesh.positions_t0.size(), mesh.triangles.size(), q.vertex_face.size(),
                q.edge_edge.size());
-  const auto vf = subsample(q.vertex_face, max_queries, [](const VertexFaceQuery& x) { return vertex_face_ccd(x); });
-  const auto ee = subsample(q.edge_edge, max_queries, [](const EdgeEdgeQuery& x) { return edge_edge_ccd(x); });
+  std::size_t vf_positives = 0, ee_positives = 0;
+  const auto vf = answer_and_select(
+      q.vertex_face, max_queries, [&](const VertexFaceQuery& x) { return vertex_face_ccd(x, truth_method); },
+      &vf_positives);
+  const auto ee = answer_and_select(
+      q.edge_edge, max_queries, [&](const EdgeEdgeQuery& x) { return edge_edge_ccd(x, truth_method); },
+      &ee_positives);
+  const auto note = [&](std::size_t candidates, std::size_t positives) {
+    return " (truth: " + truth_name + "; the step: " + std::to_string(candidates) + " candidates, " +
+           std::to_string(positives) + " collide)";
+  };
   fs::create_directories(out);
-  write_atomically(fs::path(out) / ("sim-" + scene_name + "-vertex-face.csv"), vf);
-  write_atomically(fs::path(out) / ("sim-" + scene_name + "-edge-edge.csv"), ee);
+  write_atomically(fs::path(out) / ("sim-" + scene_name + "-vertex-face.csv"), vf,
+                   note(q.vertex_face.size(), vf_positives));
+  write_atomically(fs::path(out) / ("sim-" + scene_name + "-edge-edge.csv"), ee,
+                   note(q.edge_edge.size(), ee_positives));
   return kExitOk;
 }
 
