@@ -296,12 +296,15 @@ StageResult integer_stage(const IntegerQuery& q, const Query& double_query, bool
     for (std::size_t i = 0; i < d.size(); ++i)
       interval_rows[i] = {Interval(d[i].x), Interval(d[i].y), Interval(d[i].z)};
   }
-  const auto PI = contact::polynomials(from_rows<IntervalQuery>(interval_rows));
+  // Every interval operation, the motions computed by the constructor included, must run
+  // under the rounding mode (Interval_nt<false> relies on it for its enclosures).
+  std::optional<decltype(contact::polynomials(from_rows<IntervalQuery>(interval_rows)))> PI;
   {
     CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
-    contact::for_each_in_plane_poly(PI, [](const auto&) {});
+    PI.emplace(contact::polynomials(from_rows<IntervalQuery>(interval_rows)));
+    contact::for_each_in_plane_poly(*PI, [](const auto&) {});
   }
-  const auto dual_set = dual_polys(PI, P);
+  const auto dual_set = dual_polys(*PI, P);
 
   std::optional<TimeInterval> best;
   for (Candidate& c : candidates) {
