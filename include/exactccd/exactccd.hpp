@@ -2,5 +2,6 @@
 #pragma once
 
 #include "exactccd/ccd.hpp"    // IWYU pragma: export
+#include "exactccd/scene.hpp"  // IWYU pragma: export
 #include "exactccd/stats.hpp"  // IWYU pragma: export
 #include "exactccd/types.hpp"  // IWYU pragma: export

@@ -36,7 +36,28 @@ struct Candidates {
 /// The swept box of a set of vertices of the mesh.
 Box swept_box(const MovingMesh& mesh, const int* vertices, int count);
 
-/// All candidate pairs whose swept boxes overlap (sort-and-sweep on x).
+/// The swept box of a set of vertices moving from positions_t0 to positions_t1.
+Box swept_box(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
+              const int* vertices, int count);
+
+/// Whether two closed boxes overlap (exact).
+bool overlap(const Box& a, const Box& b);
+
+/// All candidate pairs whose swept boxes overlap (sort-and-sweep along the axis of largest
+/// extent, within strips along the second: broad_phase.cpp); every vertex of the
+/// mesh is a vertex-face candidate.
 Candidates find_candidates(const MovingMesh& mesh, const std::vector<Edge>& edges);
+
+/// As above for vertices moving from positions_t0 to positions_t1, with only the listed
+/// `vertices` (indices into the positions, ascending) as vertex-face candidates: the pairs
+/// report vertex indices, not positions in the list.
+Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
+                           const std::vector<Triangle>& triangles, const std::vector<Edge>& edges,
+                           const std::vector<int>& vertices);
+
+/// Pairs {i, j}, i < j, of triangles whose boxes over `positions` (a static mesh) overlap,
+/// adjacent triangles included; sorted.
+std::vector<std::array<int, 2>> overlapping_triangle_pairs(const std::vector<Vec3>& positions,
+                                                           const std::vector<Triangle>& triangles);
 
 }  // namespace exactccd::scene

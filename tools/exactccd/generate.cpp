@@ -21,6 +21,7 @@ constexpr const char* kHelp = R"(usage: exactccd generate catalogue --out DIR
        exactccd generate sim --scene cloth|strip|fold|pile [--resolution N] [--seed S]
                              [--max-queries M] [--truth filtered|exact] --out DIR
        exactccd generate families [--seed S] [--instances N] [--k-step K] --out DIR
+       exactccd generate scene --scene NAME [--resolution N] [--seed S] --out DIR
 
 Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).
 
@@ -31,6 +32,8 @@ Writes query sets in the benchmark CSV format (8 rows per query, exact rationals
               <= 60 and unperturbed, N per direction and (family, k) (default 1, K = 4):
               DIR/families-vertex-face.csv and DIR/families-edge-edge.csv; the truth column is
               the exact answer
+  scene       one time step of a procedural scene as two meshes, DIR/T0.obj (t = 0) and
+              DIR/T1.obj (t = 1), for exactccd scene
   sim         simulation-like queries: the broad-phase candidates of one time step of a
               procedural scene (lib/scene/procedural_scenes.hpp), written to
               DIR/sim-<scene>-vertex-face.csv and DIR/sim-<scene>-edge-edge.csv; the truth
@@ -148,9 +151,10 @@ int run_generate(int argc, char** argv) {
       throw UsageError("generate: unexpected argument '" + a + "'");
     }
   }
-  if (what != "catalogue" && what != "sim" && what != "families")
-    throw UsageError("generate: expected catalogue, sim or families (see exactccd generate --help)");
+  if (what != "catalogue" && what != "sim" && what != "families" && what != "scene")
+    throw UsageError("generate: expected catalogue, sim, families or scene (see exactccd generate --help)");
   if (out.empty()) throw UsageError("generate: --out DIR is required");
+  if (what == "scene") return generate_scene(scene_name, resolution, seed, out);
   if (what == "catalogue") {
     fs::create_directories(out);
     write_atomically(fs::path(out) / "catalogue-vertex-face.csv", to_benchmark(catalogue::vertex_face_cases()));

@@ -21,6 +21,7 @@ constexpr Subcommand kSubcommands[] = {
     {"generate", exactccd::cli::run_generate, "write the project's query sets (catalogue, sim, families)"},
     {"compare", exactccd::cli::run_compare, "another code's answers against the exact ones, by category"},
     {"stability", exactccd::cli::run_stability, "error rates of every method on the degenerate families vs k"},
+    {"scene", exactccd::cli::run_scene, "exact CCD of a whole mesh over one step (two OBJ files)"},
 };
 
 void print_help() {

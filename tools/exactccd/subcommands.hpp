@@ -2,6 +2,9 @@
 // an exit code (cli_common.hpp); it may throw UsageError or io::ParseError.
 #pragma once
 
+#include <cstdint>
+#include <string>
+
 namespace exactccd::cli {
 
 int run_check(int argc, char** argv);
@@ -9,5 +12,9 @@ int run_bench(int argc, char** argv);
 int run_generate(int argc, char** argv);
 int run_stability(int argc, char** argv);
 int run_compare(int argc, char** argv);
+int run_scene(int argc, char** argv);
+
+/// `exactccd generate scene` (scene.cpp): writes DIR/T0.obj and DIR/T1.obj of a procedural scene.
+int generate_scene(const std::string& scene, int resolution, std::uint64_t seed, const std::string& out);
 
 }  // namespace exactccd::cli

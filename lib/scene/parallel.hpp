@@ -1,0 +1,65 @@
+// A small parallel loop over an index range, in chunks handed out dynamically (some CCD queries
+// cost 100x others), for the scene narrow phase. No state outlives a call.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace exactccd::scene {
+
+/// The number of threads to use for `requested` (0: every hardware thread), at least 1.
+inline unsigned resolve_threads(unsigned requested) {
+  if (requested == 0) requested = std::thread::hardware_concurrency();
+  return std::max(1u, requested);
+}
+
+/// Calls body(begin, end, worker) over chunks [begin, end) of [0, n) of at most `chunk`
+/// indices, on up to `threads` threads (the calling thread is worker 0; workers are numbered
+/// below the returned count, so per-worker outputs can be indexed by them). Chunks go to
+/// whichever worker is free, so which worker runs which chunk is not deterministic: callers
+/// merge per-worker outputs in an order of their own. body returns false to stop every worker
+/// early (chunks already started finish). The first exception thrown by body stops the loop
+/// and is rethrown here. Returns the number of workers used.
+template <class Body>
+unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Body&& body) {
+  chunk = std::max<std::size_t>(1, chunk);
+  const std::size_t chunks = (n + chunk - 1) / chunk;
+  const unsigned workers = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, chunks)));
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto work = [&](unsigned worker) {
+    try {
+      for (std::size_t c; !stop.load(std::memory_order_relaxed) && (c = next.fetch_add(1)) < chunks;) {
+        const std::size_t begin = c * chunk, end = std::min(n, begin + chunk);
+        if (!body(begin, end, worker)) stop = true;
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      stop = true;
+    }
+  };
+  std::vector<std::thread> pool;
+  pool.reserve(workers - 1);
+  for (unsigned w = 1; w < workers; ++w) {
+    try {
+      pool.emplace_back(work, w);
+    } catch (const std::system_error&) {  // no more threads: the ones running do all the work
+      break;
+    }
+  }
+  work(0);
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return workers;
+}
+
+}  // namespace exactccd::scene

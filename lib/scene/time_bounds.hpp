@@ -1,0 +1,26 @@
+// Cheap certified bounds on when a pair of moving primitives can first touch, used by
+// exactccd::earliest_toi to skip pairs that cannot beat the earliest contact found so far.
+// Each function answers "no contact in [0, h]" only when that is certain; otherwise it passes.
+#pragma once
+
+#include <array>
+
+#include "scene/broad_phase.hpp"
+
+namespace exactccd::scene {
+
+/// An empty box (lo = +inf, hi = -inf), the start of a union.
+Box empty_box();
+
+/// Grows `box` to hold the positions over the times [0, h] (h in [0, 1]) of a vertex moving
+/// linearly from p0 (t = 0) to p1 (t = 1). Certified despite rounding (see the .cpp).
+void add_vertex_until(Box& box, const Vec3& p0, const Vec3& p1, double h);
+
+/// True only if the four moving points, at_t0[i] + t (at_t1[i] - at_t0[i]), are certainly not
+/// coplanar for any t in [0, h] (h in [0, 1]): the volume det[q1 - q0, q2 - q0, q3 - q0] keeps
+/// one strict sign there, proved with interval arithmetic on its Bernstein coefficients over
+/// [0, h]. A vertex-face or edge-edge contact needs its four points coplanar, so then the pair
+/// has no contact in [0, h].
+bool never_coplanar_until(const std::array<Vec3, 4>& at_t0, const std::array<Vec3, 4>& at_t1, double h);
+
+}  // namespace exactccd::scene

@@ -1,0 +1,194 @@
+// exactccd scene: scene-level CCD of one time step given as two OBJ files; and the OBJ writer
+// of `exactccd generate scene`.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli_common.hpp"
+#include "exactccd/scene.hpp"
+#include "io/obj.hpp"
+#include "scene/procedural_scenes.hpp"
+#include "scene/scene_primitives.hpp"
+#include "subcommands.hpp"
+
+namespace exactccd::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kHelp = R"(usage: exactccd scene T0.obj T1.obj [--json] [--threads N]
+
+One time step of a triangle mesh whose vertices move linearly from their positions in T0.obj
+(t = 0) to those in T1.obj (t = 1); both files must have the same vertex count and faces.
+Every vertex-face and edge-edge pair is decided exactly (pairs sharing a vertex are not
+tested), with the tightest double enclosure of its time of impact.
+
+Prints the vertex and triangle counts, the broad-phase candidate pairs, the colliding
+vertex-face pairs (vertex, triangle) and edge-edge pairs (a0 a1, b0 b1: each edge ascending,
+pairs ordered) with their times of impact, the earliest time of impact, the largest collision-
+free step (1 when collision-free, else the largest double below the earliest TOI's lower
+bound) and whether the mesh is free of self-intersections at t = 0 and at t = 1 (the exact
+static check of exactccd::intersection_free). Indices are 0-based, in OBJ order (a polygon
+is fan-triangulated into consecutive triangles).
+
+options:
+  --json          print one JSON object instead: vertices, triangles, candidates, vf_pairs
+                  ([vertex, triangle] lists), ee_pairs ([a0, a1, b0, b1] lists), earliest_toi
+                  ([lo, hi] or null), max_safe_step, end_intersection_free (both ends),
+                  t0_intersection_free, t1_intersection_free
+  --threads N     narrow phase on N threads (default: all cores; same results)
+  -h, --help      this help
+exit codes: 0 ran (whatever it found), 2 bad usage or malformed or mismatched files, 1 internal
+error.
+)";
+
+io::ObjMesh load_obj(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError("scene: cannot open '" + path + "'");
+  return io::read_obj(in, path);
+}
+
+/// The scene of two OBJ files, or UsageError when they are not the same mesh.
+Scene scene_of(const std::string& path0, const io::ObjMesh& m0, const std::string& path1, const io::ObjMesh& m1) {
+  if (m0.vertices.size() != m1.vertices.size())
+    throw UsageError("scene: mismatched files: " + path0 + " has " + std::to_string(m0.vertices.size()) +
+                     " vertices but " + path1 + " has " + std::to_string(m1.vertices.size()));
+  if (m0.triangles.size() != m1.triangles.size())
+    throw UsageError("scene: mismatched files: " + path0 + " has " + std::to_string(m0.triangles.size()) +
+                     " triangles but " + path1 + " has " + std::to_string(m1.triangles.size()));
+  for (std::size_t i = 0; i < m0.triangles.size(); ++i)
+    if (m0.triangles[i] != m1.triangles[i])
+      throw UsageError("scene: mismatched files: triangle " + std::to_string(i) + " (0-based) differs between " +
+                       path0 + " and " + path1);
+  Scene s;
+  s.positions_t0 = m0.vertices;
+  s.positions_t1 = m1.vertices;
+  s.triangles = m0.triangles;
+  return s;
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+std::string interval(const TimeInterval& t) { return "[" + number(t.lo) + ", " + number(t.hi) + "]"; }
+
+}  // namespace
+
+int run_scene(int argc, char** argv) {
+  std::vector<std::string> files;
+  bool json = false;
+  SceneOptions options;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-h" || a == "--help") {
+      std::cout << kHelp;
+      return kExitOk;
+    } else if (a == "--json") {
+      json = true;
+    } else if (a == "--threads") {
+      const std::string v = option_value(argc, argv, i);
+      try {
+        const int n = std::stoi(v);
+        if (n < 1) throw std::invalid_argument(v);
+        options.threads = static_cast<unsigned>(n);
+      } catch (const std::exception&) {
+        throw UsageError("scene: --threads needs a positive integer, not '" + v + "'");
+      }
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError("scene: unknown option '" + a + "' (see exactccd scene --help)");
+    } else {
+      files.push_back(a);
+    }
+  }
+  if (files.size() != 2) throw UsageError("scene: expected two files, T0.obj T1.obj (see exactccd scene --help)");
+  const io::ObjMesh m0 = load_obj(files[0]), m1 = load_obj(files[1]);
+  const Scene s = scene_of(files[0], m0, files[1], m1);
+  try {
+    validate(s);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("scene: ") + e.what());
+  }
+  const scene::ScenePrimitives prim = scene::scene_primitives(s);
+  const std::size_t candidates = prim.candidates.vertex_face.size() + prim.candidates.edge_edge.size();
+  const std::vector<Collision> collisions = find_collisions(s, options);
+  const std::optional<TimeInterval> earliest = earliest_toi(collisions);
+  const double step = max_collision_free_step(earliest);
+  const bool free0 = intersection_free(s.positions_t0, s.triangles);
+  const bool free1 = intersection_free(s.positions_t1, s.triangles);
+  std::size_t vf = 0;
+  for (const Collision& c : collisions) vf += c.kind == CollisionKind::vertex_face;
+  std::ostringstream out;
+  if (json) {
+    std::string vf_list, ee_list;
+    for (const Collision& c : collisions) {
+      if (c.kind == CollisionKind::vertex_face)
+        vf_list += (vf_list.empty() ? "[" : ", [") + std::to_string(c.vertex) + ", " + std::to_string(c.triangle) + "]";
+      else
+        ee_list += (ee_list.empty() ? "[" : ", [") + std::to_string(c.edge_a[0]) + ", " + std::to_string(c.edge_a[1]) +
+                   ", " + std::to_string(c.edge_b[0]) + ", " + std::to_string(c.edge_b[1]) + "]";
+    }
+    const auto boolean = [](bool b) { return b ? "true" : "false"; };
+    out << "{\"vertices\": " << s.positions_t0.size() << ", \"triangles\": " << s.triangles.size()
+        << ", \"candidates\": " << candidates << ",\n \"vf_pairs\": [" << vf_list << "],\n \"ee_pairs\": ["
+        << ee_list << "],\n \"earliest_toi\": " << (earliest ? interval(*earliest) : "null")
+        << ", \"max_safe_step\": " << number(step) << ",\n \"end_intersection_free\": " << boolean(free0 && free1)
+        << ", \"t0_intersection_free\": " << boolean(free0) << ", \"t1_intersection_free\": " << boolean(free1)
+        << "}\n";
+  } else {
+    const auto yes = [](bool b) { return b ? "yes" : "no"; };
+    out << "vertices                  " << s.positions_t0.size() << "\n"
+        << "triangles                 " << s.triangles.size() << "\n"
+        << "candidates                " << candidates << " (" << prim.candidates.vertex_face.size() << " vf, "
+        << prim.candidates.edge_edge.size() << " ee)\n"
+        << "colliding vf pairs        " << vf << "\n"
+        << "colliding ee pairs        " << collisions.size() - vf << "\n"
+        << "earliest toi              " << (earliest ? interval(*earliest) : "none") << "\n"
+        << "max safe step             " << number(step) << "\n"
+        << "intersection-free at t0   " << yes(free0) << "\n"
+        << "intersection-free at t1   " << yes(free1) << "\n";
+    for (const Collision& c : collisions) {
+      if (c.kind == CollisionKind::vertex_face)
+        out << "vf " << c.vertex << " " << c.triangle;
+      else
+        out << "ee " << c.edge_a[0] << " " << c.edge_a[1] << " " << c.edge_b[0] << " " << c.edge_b[1];
+      out << " toi " << interval(c.toi) << "\n";
+    }
+  }
+  std::cout << out.str();
+  return kExitOk;
+}
+
+int generate_scene(const std::string& scene_name, int resolution, std::uint64_t seed, const std::string& out) {
+  if (scene_name.empty()) throw UsageError("generate scene: --scene NAME is required (see exactccd generate --help)");
+  scene::MovingMesh mesh;
+  try {
+    mesh = scene::procedural_scene(scene_name, resolution, seed);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("generate scene: ") + e.what());
+  }
+  fs::create_directories(out);
+  const std::string comment = "exactccd generate scene --scene " + scene_name + " --resolution " +
+                              std::to_string(resolution) + " --seed " + std::to_string(seed);
+  // Both files go to temporary names first, then are renamed: no half-written pair.
+  const char* const names[] = {"T0.obj", "T1.obj"};
+  const std::vector<Vec3>* const positions[] = {&mesh.positions_t0, &mesh.positions_t1};
+  for (int i = 0; i < 2; ++i) {
+    const fs::path tmp = fs::path(out) / (std::string(names[i]) + ".tmp");
+    std::ofstream f(tmp);
+    if (!f) throw UsageError("generate scene: cannot write '" + tmp.string() + "'");
+    io::write_obj(f, *positions[i], mesh.triangles, comment + " (" + names[i] + ")");
+    f.close();
+    if (!f) throw UsageError("generate scene: write error on '" + tmp.string() + "'");
+  }
+  for (const char* name : names) fs::rename(fs::path(out) / (std::string(name) + ".tmp"), fs::path(out) / name);
+  std::printf("%s: %zu vertices, %zu triangles (T0.obj, T1.obj)\n", out.c_str(), mesh.positions_t0.size(),
+              mesh.triangles.size());
+  return kExitOk;
+}
+
+}  // namespace exactccd::cli
