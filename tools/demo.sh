@@ -22,6 +22,11 @@ fi
 echo
 echo "== the textbook method on the same data (not robust: note its FP and FN)"
 "$exe" check --method naive data/*/*.csv
+for scene in data/scenes/*/; do
+  echo
+  echo "== scene-level CCD: exactccd scene ${scene}T0.obj ${scene}T1.obj (first lines)"
+  "$exe" scene "${scene}T0.obj" "${scene}T1.obj" | head -9
+done
 echo
 echo "== exactccd bench --methods naive,naive-tolerance,mpfr256,filtered,exact (bundled datasets)"
 "$exe" bench --repetitions 3 --methods naive,naive-tolerance,mpfr256,filtered,exact
