@@ -25,7 +25,8 @@ echo "== the textbook method on the same data (not robust: note its FP and FN)"
 for scene in data/scenes/*/; do
   echo
   echo "== scene-level CCD: exactccd scene ${scene}T0.obj ${scene}T1.obj (first lines)"
-  "$exe" scene "${scene}T0.obj" "${scene}T1.obj" | head -9
+  "$exe" scene "${scene}T0.obj" "${scene}T1.obj" > build/scene-demo.txt
+  head -9 build/scene-demo.txt
 done
 echo
 echo "== exactccd bench --methods naive,naive-tolerance,mpfr256,filtered,exact (bundled datasets)"
