@@ -7,6 +7,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
   libgtest-dev libbenchmark-dev libeigen3-dev doxygen
   python3-matplotlib
+  clang libclang-rt-dev
 )
 
 missing=()

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds exactccd and runs the whole test suite (CTest), then the
-# same suite built with AddressSanitizer, UndefinedBehaviorSanitizer and LeakSanitizer.
-# Usage: bash tools/test.sh     (build directories: build/, build-asan/)
-# EXACTCCD_SKIP_SANITIZERS=1 skips the second pass (CI always runs it).
+# same suite built with AddressSanitizer, UndefinedBehaviorSanitizer and LeakSanitizer, then
+# the libFuzzer targets built with clang and their smoke runs (docs/fuzzing.md).
+# Usage: bash tools/test.sh     (build directories: build/, build-asan/, build-fuzz-clang/)
+# EXACTCCD_SKIP_SANITIZERS=1 skips the second pass, EXACTCCD_SKIP_FUZZERS=1 the third (CI
+# always runs both).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
@@ -21,4 +23,13 @@ if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
   # The package test installs and builds a consumer without sanitizers: covered above.
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs" -E '^package\.'
+fi
+
+if [ "${EXACTCCD_SKIP_FUZZERS:-0}" != "1" ]; then
+  echo "== clang libFuzzer build and fuzz smoke tests"
+  cmake -S . -B build-fuzz-clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DEXACTCCD_BUILD_FUZZERS=ON -DEXACTCCD_BUILD_TESTS=OFF -DEXACTCCD_BUILD_BENCHMARKS=OFF \
+        -DEXACTCCD_WERROR=ON
+  cmake --build build-fuzz-clang -j"$jobs"
+  ctest --test-dir build-fuzz-clang --output-on-failure -j"$jobs" -R '^fuzz\.'
 fi

@@ -22,6 +22,7 @@ constexpr Subcommand kSubcommands[] = {
     {"compare", exactccd::cli::run_compare, "another code's answers against the exact ones, by category"},
     {"stability", exactccd::cli::run_stability, "error rates of every method on the degenerate families vs k"},
     {"scene", exactccd::cli::run_scene, "exact CCD of a whole mesh over one step (two OBJ files)"},
+    {"fuzz-against", exactccd::cli::run_fuzz_against, "another code (a plug-in .so) against the exact answers"},
 };
 
 void print_help() {

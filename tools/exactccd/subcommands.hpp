@@ -13,6 +13,7 @@ int run_generate(int argc, char** argv);
 int run_stability(int argc, char** argv);
 int run_compare(int argc, char** argv);
 int run_scene(int argc, char** argv);
+int run_fuzz_against(int argc, char** argv);
 
 /// `exactccd generate scene` (scene.cpp): writes DIR/T0.obj and DIR/T1.obj of a procedural scene.
 int generate_scene(const std::string& scene, int resolution, std::uint64_t seed, const std::string& out);

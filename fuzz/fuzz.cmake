@@ -1,0 +1,52 @@
+# Fuzzing (docs/fuzzing.md); included at the end of the top-level CMakeLists.txt.
+# - Every build: the example plug-ins of `exactccd fuzz-against` (build/plugins/*.so).
+# - With tests: the plug-in loader and fuzz-against contract, and the seed corpus' freshness.
+# - EXACTCCD_BUILD_FUZZERS (clang only; the flags are set at the top): the libFuzzer targets
+#   fuzz_vertex_face and fuzz_edge_edge and their CTest smoke runs (fuzz.*).
+
+target_link_libraries(exactccd_cli PRIVATE ${CMAKE_DL_LIBS})  # dlopen for fuzz-against
+
+# A plug-in (include/exactccd/plugin.h): a module exporting only its marked entry points.
+function(exactccd_add_plugin name source)
+  add_library(${name} MODULE ${source})
+  set_target_properties(${name} PROPERTIES PREFIX "" LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/plugins
+                        CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  target_compile_options(${name} PRIVATE ${EXACTCCD_WARNINGS})
+  target_link_libraries(${name} PRIVATE exactccd)
+  target_link_options(${name} PRIVATE -Wl,--exclude-libs,ALL)
+endfunction()
+exactccd_add_plugin(naive_plugin fuzz/plugins/naive_plugin.cpp)
+exactccd_add_plugin(naive_tolerance_plugin fuzz/plugins/naive_tolerance_plugin.cpp)
+
+if(EXACTCCD_BUILD_TESTS)
+  exactccd_add_plugin(plugin_vf_only tests/plugin_vf_only.cpp)
+  add_test(NAME cli.fuzz_against
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:exactccd_cli> -DNAIVE=$<TARGET_FILE:naive_plugin>
+            -DVF_ONLY=$<TARGET_FILE:plugin_vf_only> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/fuzz-against-test
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli_fuzz_against.cmake)
+  # The committed seed corpus holds what the generator writes now.
+  add_executable(make_seed_corpus fuzz/make_seed_corpus.cpp)
+  target_compile_options(make_seed_corpus PRIVATE ${EXACTCCD_WARNINGS})
+  target_link_libraries(make_seed_corpus PRIVATE exactccd_catalogue)
+  add_test(NAME fuzz.seed_corpus_fresh
+    COMMAND ${CMAKE_COMMAND} -DGENERATOR=$<TARGET_FILE:make_seed_corpus>
+            -DCORPUS=${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus -DWORK=${CMAKE_CURRENT_BINARY_DIR}/seed-corpus-check
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/fuzz_corpus_fresh.cmake)
+endif()
+
+if(EXACTCCD_BUILD_FUZZERS)
+  set(EXACTCCD_FUZZ_SMOKE_RUNS 2000 CACHE STRING "Inputs per fuzzer in the CTest smoke runs")
+  enable_testing()
+  foreach(kind vertex_face edge_edge)
+    add_executable(fuzz_${kind} fuzz/fuzz_${kind}.cpp)
+    target_compile_options(fuzz_${kind} PRIVATE ${EXACTCCD_WARNINGS})
+    target_link_options(fuzz_${kind} PRIVATE -fsanitize=fuzzer)
+    target_link_libraries(fuzz_${kind} PRIVATE exactccd_catalogue)
+    # New inputs go to a scratch directory (the first one), never into the committed corpus.
+    set(scratch ${CMAKE_CURRENT_BINARY_DIR}/fuzz-smoke/${kind})
+    add_test(NAME fuzz.${kind}.smoke
+      COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec '$<TARGET_FILE:fuzz_${kind}>' -runs=${EXACTCCD_FUZZ_SMOKE_RUNS} -seed=1 -max_len=512 -timeout=60 -print_final_stats=1 '${scratch}' '${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/${kind}'")
+    set_tests_properties(fuzz.${kind}.smoke PROPERTIES TIMEOUT 600
+      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
+  endforeach()
+endif()

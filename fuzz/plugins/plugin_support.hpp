@@ -1,0 +1,38 @@
+// Shared by the example plug-ins: a plug-in entry point (include/exactccd/plugin.h) that
+// answers with one of exactccd's own methods.
+#pragma once
+
+#include <array>
+#include <exception>
+
+#include "exactccd/exactccd.hpp"
+
+namespace exactccd::plugins {
+
+/// The query in the plug-in ABI's 24 doubles (benchmark row order, x y z per point).
+template <class Query>
+Query query_from(const double q[24]) {
+  std::array<Vec3, 8> r;
+  for (std::size_t i = 0; i < 8; ++i) r[i] = {q[3 * i], q[3 * i + 1], q[3 * i + 2]};
+  return from_rows<Query>(r);
+}
+
+/// 1 or 0: method's answer on the vertex-face query q; -1 if it threw (non-finite input).
+inline int vertex_face_answer(const double q[24], Method method) noexcept {
+  try {
+    return vertex_face_ccd(query_from<VertexFaceQuery>(q), method) ? 1 : 0;
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
+/// 1 or 0: method's answer on the edge-edge query q; -1 if it threw (non-finite input).
+inline int edge_edge_answer(const double q[24], Method method) noexcept {
+  try {
+    return edge_edge_ccd(query_from<EdgeEdgeQuery>(q), method) ? 1 : 0;
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
+}  // namespace exactccd::plugins

@@ -1,0 +1,20 @@
+# CTest script: the committed seed corpus (fuzz/corpus) holds every file make_seed_corpus
+# writes, byte for byte (extra committed seeds, e.g. regression inputs, are allowed).
+#   cmake -DGENERATOR=<make_seed_corpus> -DCORPUS=<fuzz/corpus> -DWORK=<scratch> -P fuzz_corpus_fresh.cmake
+file(REMOVE_RECURSE ${WORK})
+execute_process(COMMAND ${GENERATOR} ${WORK} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "make_seed_corpus exited with ${rc}")
+endif()
+file(GLOB_RECURSE fresh RELATIVE ${WORK} ${WORK}/*)
+list(LENGTH fresh n)
+if(n LESS 40)
+  message(FATAL_ERROR "make_seed_corpus wrote only ${n} files")
+endif()
+foreach(f IN LISTS fresh)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/${f} ${CORPUS}/${f} RESULT_VARIABLE differ)
+  if(NOT differ EQUAL 0)
+    message(FATAL_ERROR "fuzz/corpus/${f} is missing or stale: run make_seed_corpus fuzz/corpus (docs/fuzzing.md)")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})

@@ -1,0 +1,489 @@
+// exactccd fuzz-against: another CCD code, loaded as a plug-in (include/exactccd/plugin.h),
+// against the exact answers on the degenerate families and on random degenerate queries.
+// Every disagreement is shrunk and written as a benchmark CSV that `exactccd check` replays.
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "exact/degeneracy.hpp"
+#include "exactccd/plugin.h"
+#include "fuzz/families.hpp"
+#include "fuzz/fuzz_input.hpp"
+#include "subcommands.hpp"
+
+namespace exactccd::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using fuzzing::Rows;
+
+constexpr const char* kHelp = R"(usage: exactccd fuzz-against PLUGIN.so --kind vf|ee --out DIR [options]
+
+Tests another CCD code against the exact answers. PLUGIN.so is a shared library exporting
+  int exactccd_plugin_vf(const double q[24])   (for --kind vf)
+  int exactccd_plugin_ee(const double q[24])   (for --kind ee)
+(include/exactccd/plugin.h: the 8 points in benchmark row order, x y z each; 1 = collision,
+0 = none, anything else counts as an error). Query i of the run is
+  i even:      the degenerate families (fuzz/families.hpp) of the kind, cycling over every
+               family, k = -1 (unperturbed), 0..60 and both directions (toward/away from
+               contact), each instance randomly placed;
+  i = 1 mod 4: families::random_instance (a random family, k, direction and placement);
+  i = 3 mod 4: plain random queries biased to degeneracies (the fuzzers' decoder on random
+               bytes), cycling over its modes: integer grids at power-of-two scales, random
+               doubles, family instances and catalogue cases, each with random edits (shared
+               vertices, coplanar and collinear points, ulp nudges, subnormal and huge values).
+The truth is the exact answer (Method::filtered). Prints a table of false positives and false
+negatives per group (for the families, the k at which the plug-in disagreed).
+
+Every disagreement is shrunk, then written to DIR:
+  NNNNNN-GROUP-FP|FN-vertex-face.csv (or -edge-edge.csv): the shrunk query (query index NNNNNN
+      of the run), benchmark format, truth = the exact answer, coordinates exact rationals;
+  disagreements-vertex-face.csv: all of them, in run order; disagreements-vertex-face.txt: one
+      line per disagreement (file, group, k and direction, how it was shrunk) and the shrunk
+      query in hex floats.
+Replay: exactccd check --kind vf DIR/disagreements-vertex-face.csv (0 FP, 0 FN: the truth
+column is exact). Files of the same kind from an earlier run in DIR are replaced.
+Shrinking: a family instance is replaced by the least degenerate instance of the same family,
+direction and placement that still disagrees the same way (the smallest k >= 0, else the
+unperturbed one); the .txt lists every k at which that placement disagrees. Other queries:
+each coordinate is simplified (0, its value at the other time, an integer, fewer significand
+bits) while the same disagreement persists.
+
+options:
+  --kind vf|ee        query kind (required)
+  --queries N         number of queries (default 10000)
+  --seed S            seed (default 1); a run is reproducible and independent of --threads
+  --out DIR           where to write the disagreements (required; created if missing)
+  --threads N         query on N threads (the plug-in must then be thread-safe; default 1)
+  --no-shrink         write the disagreements as found
+  -h, --help          this help
+exit codes: 0 ran (whatever it found), 2 bad usage or a plug-in that cannot be loaded or lacks
+the kind's symbol, 1 internal error.
+)";
+
+/// A loaded plug-in; unloaded on destruction.
+class Plugin {
+ public:
+  Plugin(const std::string& path, QueryKind kind)
+      : symbol_(kind == QueryKind::vertex_face ? EXACTCCD_PLUGIN_VF_SYMBOL : EXACTCCD_PLUGIN_EE_SYMBOL) {
+    // dlopen searches the library path for a bare name: "x.so" means the file ./x.so here.
+    const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+    handle_ = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle_) {
+      const char* why = dlerror();
+      throw UsageError("fuzz-against: cannot load plug-in '" + path + "': " + (why ? why : "unknown error"));
+    }
+    dlerror();
+    void* f = dlsym(handle_, symbol_);
+    if (!f) {
+      dlclose(handle_);
+      throw UsageError("fuzz-against: plug-in '" + path + "' does not export the symbol " + symbol_ +
+                       ", needed for --kind " + kind_name(kind) +
+                       " (see include/exactccd/plugin.h: int " + symbol_ + "(const double q[24]))");
+    }
+    static_assert(sizeof(void*) == sizeof(exactccd_plugin_fn), "dlsym returns functions as void*");
+    std::memcpy(&fn_, &f, sizeof fn_);  // POSIX: a dlsym'd function pointer is stored as void*
+  }
+  ~Plugin() { dlclose(handle_); }
+  Plugin(const Plugin&) = delete;
+  Plugin& operator=(const Plugin&) = delete;
+
+  /// The plug-in's raw answer on a query.
+  int operator()(const Rows& r) const {
+    double q[24];
+    for (std::size_t i = 0; i < 8; ++i) {
+      q[3 * i] = r[i].x;
+      q[3 * i + 1] = r[i].y;
+      q[3 * i + 2] = r[i].z;
+    }
+    return fn_(q);
+  }
+
+  /// The symbol used.
+  const char* symbol() const { return symbol_; }
+
+ private:
+  const char* symbol_;
+  void* handle_ = nullptr;
+  exactccd_plugin_fn fn_ = nullptr;
+};
+
+constexpr int kKMin = families::kUnperturbed, kKMax = 60;
+constexpr int kKCount = kKMax - kKMin + 1;  // -1 (unperturbed), 0..60
+
+/// One query of the run and where it came from.
+struct Generated {
+  Rows rows{};
+  std::size_t group = 0;
+  const families::Family* family = nullptr;  ///< family sweep only
+  int k = 0;
+  bool toward = false;
+  std::uint64_t placement_seed = 0;
+};
+
+/// The groups of the table: the kind's families (sweep), then the random groups.
+struct Groups {
+  std::vector<const families::Family*> families;
+  std::vector<std::string> names;
+  std::size_t random_instance = 0, random_first = 0;  ///< random_first + mode: fuzz decoder modes
+};
+
+Groups make_groups(bool vertex_face) {
+  Groups g;
+  for (const families::Family& f : families::all_families())
+    if (f.vertex_face == vertex_face) {
+      g.families.push_back(&f);
+      g.names.push_back(f.name);
+    }
+  g.random_instance = g.names.size();
+  g.names.push_back("random_instance");
+  g.random_first = g.names.size();
+  for (int m = 0; m < fuzzing::kModeCount; ++m)
+    g.names.push_back(std::string("random_") + fuzzing::mode_name(static_cast<fuzzing::Mode>(m)));
+  return g;
+}
+
+std::mt19937_64 query_rng(std::uint64_t seed, std::size_t i, std::uint32_t tag) {
+  std::seed_seq s{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                  static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(std::uint64_t{i} >> 32), tag};
+  return std::mt19937_64(s);
+}
+
+Rows family_rows(const families::Family& f, int k, bool toward, std::uint64_t placement_seed) {
+  std::mt19937_64 rng(placement_seed);  // the placement's draws do not depend on k
+  const families::Instance inst = f.make(k, toward, rng);
+  Rows r;
+  std::visit([&r](const auto& q) { r = rows(q); }, inst.query);
+  return r;
+}
+
+Generated generate(std::size_t i, std::uint64_t seed, bool vertex_face, const Groups& g) {
+  Generated out;
+  if (i % 2 == 0) {
+    const std::size_t cells = g.families.size() * kKCount * 2;
+    const std::size_t cell = (i / 2) % cells;
+    out.group = cell / (kKCount * 2);
+    out.family = g.families[out.group];
+    out.k = kKMin + static_cast<int>((cell / 2) % kKCount);
+    out.toward = cell % 2 == 0;
+    out.placement_seed = query_rng(seed, i, 0)();
+    out.rows = family_rows(*out.family, out.k, out.toward, out.placement_seed);
+  } else if (i % 4 == 1) {
+    std::mt19937_64 rng = query_rng(seed, i, 1);
+    const families::Instance inst = families::random_instance(rng, vertex_face);
+    std::visit([&out](const auto& q) { out.rows = rows(q); }, inst.query);
+    out.group = g.random_instance;
+  } else {
+    std::mt19937_64 rng = query_rng(seed, i, 2);
+    const auto mode = static_cast<fuzzing::Mode>((i / 4) % fuzzing::kModeCount);
+    do {  // an edit may overflow; draw again (the unedited payloads are finite)
+      const std::vector<std::uint8_t> bytes = fuzzing::random_input(rng, mode);
+      out.rows = fuzzing::decode(bytes.data(), bytes.size(), vertex_face);
+    } while (!fuzzing::all_finite(out.rows));
+    out.group = g.random_first + static_cast<std::size_t>(mode);
+  }
+  return out;
+}
+
+bool exact_answer(const Rows& r, bool vertex_face) {
+  return vertex_face ? vertex_face_ccd(from_rows<VertexFaceQuery>(r), Method::filtered)
+                     : edge_edge_ccd(from_rows<EdgeEdgeQuery>(r), Method::filtered);
+}
+
+/// The exact degeneracy categories of a query, joined by '+' (as `exactccd compare` prints).
+std::string degeneracy_labels(const Rows& r, bool vertex_face) {
+  std::array<RationalVec3, 8> q;
+  for (std::size_t i = 0; i < 8; ++i) q[i] = {mpq_class(r[i].x), mpq_class(r[i].y), mpq_class(r[i].z)};
+  return exact::join_categories(vertex_face ? exact::degeneracy_categories(from_rows<RationalVertexFaceQuery>(q))
+                                            : exact::degeneracy_categories(from_rows<RationalEdgeEdgeQuery>(q)));
+}
+
+/// The outcome of one query.
+struct Outcome {
+  int theirs = 0;
+  bool truth = false;
+  bool error() const { return theirs != 0 && theirs != 1; }
+  bool disagrees() const { return !error() && (theirs == 1) != truth; }
+  Rows shrunk{};
+  std::string note;  ///< how it was shrunk
+};
+
+/// "-1, 23..60" from a sorted set of k.
+std::string k_ranges(const std::set<int>& ks) {
+  std::string out;
+  for (auto it = ks.begin(); it != ks.end();) {
+    const int first = *it;
+    int last = first;
+    while (++it != ks.end() && *it == last + 1) ++last;
+    if (!out.empty()) out += ", ";
+    out += std::to_string(first);
+    if (last > first) out += (last == first + 1 ? ", " : "..") + std::to_string(last);
+  }
+  return out;
+}
+
+double& coordinate(Rows& r, int c) {
+  Vec3& p = r[static_cast<std::size_t>(c / 3)];
+  return c % 3 == 0 ? p.x : (c % 3 == 1 ? p.y : p.z);
+}
+
+/// x rounded to `bits` significand bits.
+double round_to_bits(double x, int bits) {
+  int e = 0;
+  const double m = std::frexp(x, &e);
+  return std::ldexp(std::nearbyint(std::ldexp(m, bits)), e - bits);
+}
+
+/// Simplifies coordinates one at a time while `still` and `keep` hold (`keep`, the expensive
+/// one, is checked only on a change about to be accepted), for at most kShrinkBudget
+/// evaluations of `still` (queries spanning 2^-1074..2^1023 make each one slow); returns how
+/// many coordinates changed.
+constexpr int kShrinkBudget = 120;
+int simplify_coordinates(Rows& r, const std::function<bool(const Rows&)>& still_unbudgeted,
+                         const std::function<bool(const Rows&)>& keep) {
+  int budget = kShrinkBudget;
+  const auto still = [&](const Rows& s) { return budget-- > 0 && still_unbudgeted(s); };
+  std::set<int> changed;
+  for (int pass = 0; pass < 3 && budget > 0; ++pass) {
+    bool any = false;
+    for (int c = 0; c < 24; ++c) {
+      const auto attempt = [&](double v) {
+        const double x = coordinate(r, c);
+        if (v == x || !std::isfinite(v)) return false;
+        Rows s = r;
+        coordinate(s, c) = v;
+        if (!still(s) || !keep(s)) return false;
+        r = s;
+        changed.insert(c);
+        any = true;
+        return true;
+      };
+      const double x = coordinate(r, c);
+      if (x == 0 || attempt(0.0)) continue;
+      if (attempt(coordinate(r, (c + 12) % 24))) continue;  // the same value at the other time
+      if (attempt(std::nearbyint(x))) continue;
+      // The fewest significand bits that keep the disagreement (bisection; verified by attempt).
+      int lo = 1, hi = 53;
+      while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        Rows s = r;
+        coordinate(s, c) = round_to_bits(x, mid);
+        if (std::isfinite(coordinate(s, c)) && still(s)) hi = mid; else lo = mid + 1;
+      }
+      if (lo < 53) attempt(round_to_bits(x, lo));
+    }
+    if (!any) break;
+  }
+  return static_cast<int>(changed.size());
+}
+
+void shrink(const Generated& q, Outcome& o, const Plugin& plugin, bool vertex_face) {
+  const int theirs = o.theirs;
+  const auto still = [&](const Rows& r) { return plugin(r) == theirs && exact_answer(r, vertex_face) != (theirs == 1); };
+  if (q.family) {
+    std::set<int> failing;
+    for (int k = kKMin; k <= kKMax; ++k)
+      if (k == q.k || still(family_rows(*q.family, k, q.toward, q.placement_seed))) failing.insert(k);
+    const auto least = failing.upper_bound(kKMin);  // the smallest k >= 0, if any
+    const int k = least != failing.end() ? *least : kKMin;
+    o.shrunk = family_rows(*q.family, k, q.toward, q.placement_seed);
+    o.note = "shrunk to k " + std::to_string(k) + " (this placement disagrees at k = " + k_ranges(failing) + ")";
+  } else {
+    // Keeping the exact degeneracy categories stops the shrinking from sliding into another,
+    // simpler failure (e.g. every point at the origin) instead of minimising this one.
+    const std::string categories = degeneracy_labels(q.rows, vertex_face);
+    o.shrunk = q.rows;
+    const int n = simplify_coordinates(o.shrunk, still, [&](const Rows& r) {
+      return degeneracy_labels(r, vertex_face) == categories;
+    });
+    o.note = "shrunk: " + std::to_string(n) + " of 24 coordinates simplified, categories kept: " + categories;
+  }
+}
+
+/// Writes text to path through a temporary file and a rename: nothing is left half-written.
+void write_atomically(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) throw UsageError("fuzz-against: cannot write '" + tmp.string() + "'");
+  }
+  fs::rename(tmp, path);
+}
+
+/// An earlier run's output of this kind: NNNNNN-*-<kind>.csv and disagreements-<kind>.*.
+bool is_output_of_kind(const std::string& name, const std::string& kind_suffix) {
+  if (name == "disagreements-" + kind_suffix + ".csv" || name == "disagreements-" + kind_suffix + ".txt")
+    return true;
+  const std::string tail = "-" + kind_suffix + ".csv";
+  if (name.size() < 7 + tail.size() || name.compare(name.size() - tail.size(), tail.size(), tail) != 0)
+    return false;
+  return std::all_of(name.begin(), name.begin() + 6, [](char ch) { return ch >= '0' && ch <= '9'; }) &&
+         name[6] == '-';
+}
+
+}  // namespace
+
+int run_fuzz_against(int argc, char** argv) {
+  std::string plugin_path, out_dir;
+  std::optional<QueryKind> kind;
+  std::size_t queries = 10000;
+  std::uint64_t seed = 1;
+  unsigned threads = 1;
+  bool shrinking = true;
+  const auto number = [](const std::string& option, const std::string& v) {
+    try {
+      std::size_t used = 0;
+      const unsigned long long n = std::stoull(v, &used);
+      if (used != v.size() || v[0] == '-') throw std::invalid_argument(v);
+      return n;
+    } catch (const std::exception&) {
+      throw UsageError("fuzz-against: " + option + " needs a non-negative integer, not '" + v + "'");
+    }
+  };
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-h" || a == "--help") {
+      std::cout << kHelp;
+      return kExitOk;
+    } else if (a == "--kind") {
+      kind = parse_kind(option_value(argc, argv, i));
+    } else if (a == "--queries") {
+      queries = number(a, option_value(argc, argv, i));
+    } else if (a == "--seed") {
+      seed = number(a, option_value(argc, argv, i));
+    } else if (a == "--out") {
+      out_dir = option_value(argc, argv, i);
+    } else if (a == "--threads") {
+      const auto n = number(a, option_value(argc, argv, i));
+      if (n < 1 || n > 1024) throw UsageError("fuzz-against: --threads needs 1..1024");
+      threads = static_cast<unsigned>(n);
+    } else if (a == "--no-shrink") {
+      shrinking = false;
+    } else if (!a.empty() && a[0] == '-') {
+      throw UsageError("fuzz-against: unknown option '" + a + "' (see exactccd fuzz-against --help)");
+    } else if (plugin_path.empty()) {
+      plugin_path = a;
+    } else {
+      throw UsageError("fuzz-against: one plug-in at a time ('" + plugin_path + "' and '" + a + "')");
+    }
+  }
+  if (plugin_path.empty()) throw UsageError("fuzz-against: no plug-in (see exactccd fuzz-against --help)");
+  if (!kind) throw UsageError("fuzz-against: --kind vf|ee is required");
+  if (out_dir.empty()) throw UsageError("fuzz-against: --out DIR is required");
+  if (queries < 1) throw UsageError("fuzz-against: --queries must be at least 1");
+
+  const Plugin plugin(plugin_path, *kind);
+  const bool vf = *kind == QueryKind::vertex_face;
+  const std::string kind_suffix = vf ? "vertex-face" : "edge-edge";
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (!fs::is_directory(out_dir)) throw UsageError("fuzz-against: cannot create directory '" + out_dir + "'");
+
+  const Groups groups = make_groups(vf);
+  std::vector<Generated> generated(queries);
+  std::vector<Outcome> outcomes(queries);
+  const double start = now_seconds();
+  parallel_for(0, queries, threads, [&](std::size_t i) {
+    Generated& q = generated[i];
+    q = generate(i, seed, vf, groups);
+    Outcome& o = outcomes[i];
+    o.truth = exact_answer(q.rows, vf);
+    o.theirs = plugin(q.rows);
+    if (!o.disagrees()) return;
+    if (shrinking) {
+      shrink(q, o, plugin, vf);
+    } else {
+      o.shrunk = q.rows;
+      o.note = "not shrunk";
+    }
+  }, "fuzz-against");
+  const double seconds = now_seconds() - start;
+
+  // The table.
+  struct Row {
+    std::size_t queries = 0, collide = 0, fp = 0, fn = 0, errors = 0;
+    std::set<int> ks;  // family sweep: k at which some instance disagreed
+  };
+  std::vector<Row> table(groups.names.size());
+  Row total;
+  for (std::size_t i = 0; i < queries; ++i) {
+    const Outcome& o = outcomes[i];
+    for (Row* row : {&table[generated[i].group], &total}) {
+      ++row->queries;
+      row->collide += o.truth;
+      row->errors += o.error();
+      row->fp += o.disagrees() && !o.truth;
+      row->fn += o.disagrees() && o.truth;
+      if (o.disagrees() && generated[i].family && row != &total) row->ks.insert(generated[i].k);
+    }
+  }
+  std::printf("fuzz-against %s (%s): %zu %s queries, seed %llu, truth = the exact answer, %.1f s\n\n",
+              plugin_path.c_str(), plugin.symbol(), queries, kind_suffix.c_str(),
+              static_cast<unsigned long long>(seed), seconds);
+  std::printf("%-28s %8s %8s %7s %7s %7s  %s\n", "group", "queries", "collide", "FP", "FN", "errors",
+              "disagrees at k (families; -1 = unperturbed)");
+  const auto print_row = [](const std::string& name, const Row& r) {
+    std::printf("%-28s %8zu %8zu %7zu %7zu %7zu  %s\n", name.c_str(), r.queries, r.collide, r.fp, r.fn,
+                r.errors, k_ranges(r.ks).c_str());
+  };
+  for (std::size_t g = 0; g < table.size(); ++g) print_row(groups.names[g], table[g]);
+  print_row("total", total);
+
+  // The disagreements: replace this kind's files of an earlier run, then write.
+  for (const auto& entry : fs::directory_iterator(out_dir))
+    if (entry.is_regular_file() && is_output_of_kind(entry.path().filename().string(), kind_suffix))
+      fs::remove(entry.path());
+  io::BenchmarkQueries all;
+  std::string index;
+  std::size_t files = 0;
+  for (std::size_t i = 0; i < queries; ++i) {
+    const Outcome& o = outcomes[i];
+    if (!o.disagrees()) continue;
+    const Generated& q = generated[i];
+    const char* type = o.truth ? "FN" : "FP";
+    char prefix[32];
+    std::snprintf(prefix, sizeof prefix, "%06zu", i);
+    const std::string name = std::string(prefix) + "-" + groups.names[q.group] + "-" + type + "-" + kind_suffix + ".csv";
+    write_atomically(fs::path(out_dir) / name, fuzzing::benchmark_csv(o.shrunk, o.truth));
+    ++files;
+    std::array<RationalVec3, 8> rational;
+    for (std::size_t p = 0; p < 8; ++p)
+      rational[p] = {mpq_class(o.shrunk[p].x), mpq_class(o.shrunk[p].y), mpq_class(o.shrunk[p].z)};
+    all.rows.push_back(rational);
+    all.truth.push_back(o.truth);
+    index += name + "  " + type + "  " + groups.names[q.group];
+    if (q.family) index += " k " + std::to_string(q.k) + (q.toward ? " toward" : " away");
+    index += "  " + o.note + "\n" + fuzzing::hex_rows(o.shrunk, vf);
+  }
+  std::ostringstream csv;
+  io::write_benchmark_csv(csv, all);
+  write_atomically(fs::path(out_dir) / ("disagreements-" + kind_suffix + ".csv"), csv.str());
+  write_atomically(fs::path(out_dir) / ("disagreements-" + kind_suffix + ".txt"),
+                   "# exactccd fuzz-against " + plugin_path + " --kind " + kind_name(*kind) + " --queries " +
+                       std::to_string(queries) + " --seed " + std::to_string(seed) +
+                       ": one line per disagreement (file, FP/FN, group, shrinking), then the shrunk query "
+                       "in hex floats; the rows of disagreements-" + kind_suffix + ".csv in order\n" + index);
+  std::printf("\n%zu disagreements (FP %zu, FN %zu)%s, written to %s: one CSV each, all in "
+              "disagreements-%s.csv, described in disagreements-%s.txt\n"
+              "replay: exactccd check --kind %s %s/disagreements-%s.csv\n",
+              files, total.fp, total.fn, shrinking ? ", shrunk" : "", out_dir.c_str(), kind_suffix.c_str(),
+              kind_suffix.c_str(), kind_name(*kind).c_str(), out_dir.c_str(), kind_suffix.c_str());
+  return kExitOk;
+}
+
+}  // namespace exactccd::cli
