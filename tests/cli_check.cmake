@@ -209,6 +209,21 @@ elseif(CASE STREQUAL "compare")
   run(compare --answers ${WORK}/theirs.txt ${small})
   expect_error(2 "compare with too few answers")
 
+elseif(CASE STREQUAL "exact_stdout_clean")
+  # A vertex-face query (found while profiling the fuzz corpus) whose exact decision runs a
+  # polynomial gcd for which CGAL's modular gcd printed "UNLUCKY PRIME !!" to stdout; stdout
+  # must hold only the answer lines, and compare only its report.
+  set(unlucky ${DATA}/cgal-unlucky-prime-vertex-face.csv)
+  run(check --method exact --answers ${unlucky})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n")
+    message(FATAL_ERROR "check --method exact --answers: exit ${rc}, printed '${out}', expected '1\\n'")
+  endif()
+  file(WRITE ${WORK}/theirs.txt "0\n")
+  run(compare --answers ${WORK}/theirs.txt ${unlucky})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "queries 1, false positives 0, false negatives 1\n0 FN coplanar_for_all_t\n")
+    message(FATAL_ERROR "compare: exit ${rc}, output:\n${out}")
+  endif()
+
 elseif(CASE STREQUAL "help")
   # The program and every subcommand answer --help with exit code 0; no arguments is a usage
   # error that prints the help.
