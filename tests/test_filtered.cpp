@@ -92,7 +92,8 @@ std::string describe(const std::optional<TimeInterval>& t) {
 }
 
 std::string describe(const StageCounters& c) {
-  return "stages: volume_exclusion " + std::to_string(c.volume_exclusion) + ", interval " +
+  return "stages: volume_exclusion " + std::to_string(c.volume_exclusion) + ", static_predicates " +
+         std::to_string(c.static_predicates) + ", interval " +
          std::to_string(c.interval) + ", integer " + std::to_string(c.integer) + ", exact " +
          std::to_string(c.exact) + ", toi_refined " + std::to_string(c.toi_refined);
 }
@@ -505,7 +506,7 @@ TEST(FilteredAgreement, PowerOfTwoTranslations) {
 // ---------------------------------------------------------------------------------------------
 // 3. Random degenerate queries on small dyadic grids (fixed seed).
 //
-// 14 families, 250 queries of each kind per family (fewer for the two slow families): 6250
+// 16 families, 250 queries of each kind per family (fewer for the two slow families): 7250
 // queries, ~8 s in Release (measured). EXACTCCD_STRESS=n multiplies the counts.
 
 class Generator {
@@ -537,6 +538,25 @@ class Generator {
     for (int i = 0; i < copies; ++i) r[static_cast<std::size_t>(integer(0, 7))] = r[static_cast<std::size_t>(integer(0, 7))];
     for (std::size_t v = 0; v < 4; ++v)
       if (coin(20)) r[v + 4] = r[v];  // a vertex that does not move
+    return r;
+  }
+
+  /// Nothing moves (t1 rows = t0 rows): points of a plane grid i u + j v + k w (small
+  /// integers i, j; k = 0 except with `off_plane`) scaled by a non-dyadic step s (0.1, 0.3 or
+  /// 0.7, rounded in doubles, as a mesh on a regular grid has): parallel, collinear and touching
+  /// segments, points on edges, degenerate triangles, exactly or only up to rounding.
+  Rows static_grid(bool off_plane) {
+    static constexpr double kSteps[] = {0.1, 0.3, 0.7};
+    const double s = kSteps[integer(0, 2)];
+    const Vec3 u = small_vector(), v = small_vector(), w = small_vector();
+    Rows r;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const double i = integer(-2, 2), j = integer(-2, 2), h = off_plane && coin(30) ? integer(-1, 1) : 0;
+      r[k] = {(i * u.x + j * v.x + h * w.x) * s, (i * u.y + j * v.y + h * w.y) * s,
+              (i * u.z + j * v.z + h * w.z) * s};
+    }
+    if (coin(30)) r[static_cast<std::size_t>(integer(0, 3))] = r[static_cast<std::size_t>(integer(0, 3))];
+    for (std::size_t k = 0; k < 4; ++k) r[k + 4] = r[k];
     return r;
   }
 
@@ -759,6 +779,8 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
       {"uniform grid", [](Generator& g, Kind) { return g.uniform(); }},
       {"repeated vertices", [](Generator& g, Kind) { return g.repeated_vertices(); }},
       {"all z equal", [](Generator& g, Kind) { return g.same_z(); }},
+      {"static, one plane, non-dyadic grid step", [](Generator& g, Kind) { return g.static_grid(false); }},
+      {"static, non-dyadic grid step", [](Generator& g, Kind) { return g.static_grid(true); }},
       {"one plane", [](Generator& g, Kind) { return g.in_plane(false); }},
       {"plane at t0, plane at t1", [](Generator& g, Kind) { return g.in_plane(true); }},
       {"parallel or collinear", [](Generator& g, Kind k) { return g.parallel_or_collinear(k); }},
@@ -864,6 +886,37 @@ TEST(FilteredStageCounters, EveryFilteredCallIsCountedOnce) {
 
   std::cout << "[ stages   ] shared data, ccd calls, " << describe(ccd_counters) << "\n"
             << "[ stages   ] shared data, toi calls, " << describe(toi_counters) << "\n";
+}
+
+TEST(FilteredStageCounters, StaticQueriesAreDecidedByTheStaticPredicates) {
+  // Every static query that passes the volume filter is decided by the static stage, with the
+  // exact answer and the TOI [0, 0] for a contact (it holds at every t).
+  Generator gen(0x5eed'ccd0'2026'1130ULL);
+  std::size_t collisions = 0, static_decided = 0;
+  for (Kind kind : {Kind::vertex_face, Kind::edge_edge}) {
+    for (int i = 0; i < 400; ++i) {
+      TestQuery q;
+      q.kind = kind;
+      q.rows = gen.static_grid(i % 2 == 1);
+      StageCounters c;
+      const std::optional<TimeInterval> toi = call_toi(q, Method::filtered, &c);
+      const std::optional<TimeInterval> exact = call_toi(q, Method::exact, nullptr);
+      EXPECT_TRUE(same_toi(toi, exact)) << describe(q) << "\nfiltered " << describe(toi) << ", exact "
+                                        << describe(exact) << ", " << describe(c);
+      EXPECT_EQ(c.total(), 1u);
+      EXPECT_EQ(c.static_predicates + c.volume_exclusion, 1u) << describe(q) << ": " << describe(c);
+      if (toi) {
+        EXPECT_TRUE(toi->lo == 0 && toi->hi == 0) << describe(q);
+      }
+      collisions += toi.has_value();
+      static_decided += c.static_predicates;
+    }
+  }
+  EXPECT_GT(collisions, 80u);    // both answers occur often (measured: see the output)
+  EXPECT_LT(collisions, 720u);
+  EXPECT_GT(static_decided, 400u);
+  std::cout << "[ static   ] " << collisions << " of 800 static queries collide, " << static_decided
+            << " decided by the static stage\n";
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -9,17 +9,19 @@ namespace exactccd {
 /// per thread and add them up: the library keeps no global counters).
 struct StageCounters {
   std::uint64_t volume_exclusion = 0;  ///< static filter: V(t) != 0 on [0, 1], no collision
+  std::uint64_t static_predicates = 0;  ///< nothing moves: CGAL's exact static predicates
   std::uint64_t interval = 0;          ///< interval arithmetic on the contact polynomials
   std::uint64_t integer = 0;           ///< exact integer arithmetic, small degree-4 kernel
   std::uint64_t exact = 0;             ///< exact fallback (GMP rationals, CGAL algebraic kernel)
   std::uint64_t toi_refined = 0;  ///< answer from the interval stage, TOI from a later stage
 
   /// Total number of queries counted.
-  std::uint64_t total() const { return volume_exclusion + interval + integer + exact; }
+  std::uint64_t total() const { return volume_exclusion + static_predicates + interval + integer + exact; }
 
   /// Adds another thread's counts.
   StageCounters& operator+=(const StageCounters& o) {
     volume_exclusion += o.volume_exclusion;
+    static_predicates += o.static_predicates;
     interval += o.interval;
     integer += o.integer;
     exact += o.exact;

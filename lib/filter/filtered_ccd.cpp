@@ -5,6 +5,7 @@
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/normalize.hpp"
+#include "filter/static_stage.hpp"
 #include "filter/volume_exclusion.hpp"
 
 namespace exactccd::filter {
@@ -37,6 +38,11 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
     count(counters, &StageCounters::volume_exclusion);
     return std::nullopt;
   }
+  if (is_static(q)) {  // contact does not depend on t: decided at t = 0, the TOI if it holds
+    count(counters, &StageCounters::static_predicates);
+    if (!Kind::static_contact(q)) return std::nullopt;
+    return want_toi ? std::optional<TimeInterval>(TimeInterval{0.0, 0.0}) : kCollides;
+  }
   const StageResult interval = Kind::interval_stage(q, want_toi);
   if (interval.verdict != Verdict::uncertain) {
     count(counters, &StageCounters::interval);
@@ -57,6 +63,7 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
 
 struct VertexFace {
   static bool volume_excluded(const VertexFaceQuery& q) { return vertex_face_volume_excluded(q); }
+  static bool static_contact(const VertexFaceQuery& q) { return static_vertex_face_contact(q); }
   static StageResult interval_stage(const VertexFaceQuery& q, bool want_toi) {
     return vertex_face_interval_stage(q, want_toi);
   }
@@ -71,6 +78,7 @@ struct VertexFace {
 
 struct EdgeEdge {
   static bool volume_excluded(const EdgeEdgeQuery& q) { return edge_edge_volume_excluded(q); }
+  static bool static_contact(const EdgeEdgeQuery& q) { return static_edge_edge_contact(q); }
   static StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi) {
     return edge_edge_interval_stage(q, want_toi);
   }

@@ -1,5 +1,6 @@
 // The filtered method: stages from cheapest to exact, each deciding what it can certify.
 //   1. volume exclusion (static error bound, doubles): V(t) != 0 on [0, 1] => no collision;
+//   1b. nothing moves: CGAL's exact static predicates (orientation, collinearity) at t = 0;
 //   2. interval stage (CGAL::Interval_nt): root isolation and in-plane signs;
 //   3. integer stage (GMP integers, small exact kernel for degree <= 4);
 //   4. CGAL path (GMP rationals, CGAL's Algebraic_kernel_d_1): always decides.

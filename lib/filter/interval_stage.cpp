@@ -263,6 +263,19 @@ StageResult moving_stage(const Polys& P, bool want_toi) {
 /// The stage when V vanishes identically (coplanar for all t): see the file comment, item 4.
 template <class Polys>
 StageResult coplanar_stage(const Polys& P, bool want_toi) {
+  // First the rule over all of [0, 1] at once: a sign certified over the whole interval holds
+  // at every t in it, so a certain answer is the answer at every t (a certain contact holds at
+  // t = 0: the TOI is exactly 0). This decides static and slowly moving coplanar pairs whose
+  // rule hinges on one certain sign, even when another polynomial of the rule (never consulted
+  // for the answer) is too close to zero for its roots to be isolated below.
+  switch (contact::in_plane_contact(P, IntervalSignOracle{Interval(0.0, 1.0)})) {
+    case contact::Truth::no:
+      return {Verdict::no_collision, std::nullopt};
+    case contact::Truth::yes:
+      return {Verdict::collision, want_toi ? std::optional<TimeInterval>(TimeInterval{0.0, 0.0}) : std::nullopt};
+    case contact::Truth::unknown:
+      break;
+  }
   bool failed = false, uncertain = false;
   std::optional<TimeInterval> earliest_contact;  // among decided candidates
   double earliest_undecided = kInf;              // the smallest lo of an undecided cell

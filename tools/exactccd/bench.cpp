@@ -97,7 +97,8 @@ void write_json(std::ostream& out, const std::vector<Result>& results) {
         << r.method << "\", \"queries\": " << r.queries << ", \"mean_ns\": " << r.mean_ns
         << ", \"median_ns\": " << r.median_ns << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn
         << ", \"exact_fallbacks\": " << r.exact_fallbacks << ", \"stages\": {\"volume_exclusion\": "
-        << r.stages.volume_exclusion << ", \"interval\": " << r.stages.interval
+        << r.stages.volume_exclusion << ", \"static_predicates\": " << r.stages.static_predicates
+        << ", \"interval\": " << r.stages.interval
         << ", \"integer\": " << r.stages.integer << ", \"exact\": " << r.stages.exact << "}}"
         << (i + 1 < results.size() ? "," : "") << "\n";
   }
@@ -143,7 +144,7 @@ int run_bench(int argc, char** argv) {
 
   FILE* table = json == "-" ? stderr : stdout;
   std::fprintf(table, "%-34s %4s %-9s %8s %10s %10s %6s %6s %9s  %s\n", "dataset", "kind", "method",
-               "queries", "mean_ns", "median_ns", "FP", "FN", "exact_fb", "stages (vol/int/integer/exact)");
+               "queries", "mean_ns", "median_ns", "FP", "FN", "exact_fb", "stages (vol/static/int/integer/exact)");
   std::vector<Result> results;
   for (const Dataset& d : datasets) {
     const std::size_t n = d.queries.size();
@@ -185,9 +186,10 @@ int run_bench(int argc, char** argv) {
       r.median_ns = median(per_query_ns[m]);
       std::string stages = "-";
       if (methods[m] == Method::filtered && n) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.2f%% / %.3f%%",
-                      100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.interval / n,
+        char buf[128];
+        std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.1f%% / %.2f%% / %.3f%%",
+                      100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.static_predicates / n,
+                      100.0 * r.stages.interval / n,
                       100.0 * r.stages.integer / n, 100.0 * r.stages.exact / n);
         stages = buf;
       }
