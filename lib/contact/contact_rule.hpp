@@ -89,26 +89,53 @@ Truth branch(Truth condition, Then&& if_yes, Else&& if_no) {
   return a == Truth::unknown || a != if_no() ? Truth::unknown : a;
 }
 
+/// p lies on one of the triangle's three closed edges.
+template <class Polys, class SignOracle>
+Truth vertex_on_an_edge(const Polys& P, SignOracle&& sign) {
+  return any_of([&] { return point_on_segment(P.on_edge(0), sign); },
+                [&] { return point_on_segment(P.on_edge(1), sign); },
+                [&] { return point_on_segment(P.on_edge(2), sign); });
+}
+
+/// An endpoint of one edge lies on the other closed edge.
+template <class Polys, class SignOracle>
+Truth endpoint_on_other_edge(const Polys& P, SignOracle&& sign) {
+  return any_of([&] { return point_on_segment(P.endpoint_on_edge(0), sign); },
+                [&] { return point_on_segment(P.endpoint_on_edge(1), sign); },
+                [&] { return point_on_segment(P.endpoint_on_edge(2), sign); },
+                [&] { return point_on_segment(P.endpoint_on_edge(3), sign); });
+}
+
+/// The rule's answer `t`, refined where it is unknown by a sufficient condition for contact:
+/// `contact_if_yes` implies contact whatever the branch, so its certain "yes" decides. Exact
+/// oracles never leave `t` unknown, so they never pay for the refinement. It matters where
+/// the branch hinges on a sign that is exactly zero (a point exactly on an edge makes a
+/// barycentric numerator or a segment parameter vanish, which an interval cannot certify)
+/// while the edge test is certain (its defining polynomial is the one whose root is examined).
+template <class Sufficient>
+Truth refined(Truth t, Sufficient&& contact_if_yes) {
+  if (t != Truth::unknown) return t;
+  return contact_if_yes() == Truth::yes ? Truth::yes : Truth::unknown;
+}
+
 /// Vertex-face contact at a time where the volume V vanishes (p is in the triangle's plane,
 /// or the triangle is degenerate):
 /// - proper triangle (n != 0): p is inside iff its three barycentric numerators
 ///   n . (e_i x (p - v_i)) = |n|^2 lambda_i are all >= 0;
 /// - degenerate triangle (n == 0: a, b, c collinear or coincident): the hull is the union of
 ///   the three closed segments ab, bc, ca.
+/// p on a closed edge is in the hull in either case (see refined()).
 template <class Polys, class SignOracle>
 Truth vertex_face_in_plane_contact(const Polys& P, SignOracle&& sign) {
-  return branch(
+  const Truth t = branch(
       is_nonzero(P.normal(), sign),
       [&] {
         return all_of([&] { return is_nonnegative_sign(sign(P.barycentric(0))); },
                       [&] { return is_nonnegative_sign(sign(P.barycentric(1))); },
                       [&] { return is_nonnegative_sign(sign(P.barycentric(2))); });
       },
-      [&] {
-        return any_of([&] { return point_on_segment(P.on_edge(0), sign); },
-                      [&] { return point_on_segment(P.on_edge(1), sign); },
-                      [&] { return point_on_segment(P.on_edge(2), sign); });
-      });
+      [&] { return vertex_on_an_edge(P, sign); });
+  return refined(t, [&] { return vertex_on_an_edge(P, sign); });
 }
 
 /// Edge-edge contact at a time where the volume V vanishes (the edges are coplanar):
@@ -116,9 +143,10 @@ Truth vertex_face_in_plane_contact(const Polys& P, SignOracle&& sign) {
 ///   alpha = U / D, beta = W / D; contact iff both lie in [0, 1];
 /// - parallel, collinear or zero-length (w == 0): the segments meet iff an endpoint of one lies
 ///   on the other (the intersection of two collinear segments is bounded by such endpoints).
+/// An endpoint on the other segment is a common point in either case (see refined()).
 template <class Polys, class SignOracle>
 Truth edge_edge_in_plane_contact(const Polys& P, SignOracle&& sign) {
-  return branch(
+  const Truth t = branch(
       is_nonzero(P.direction_cross(), sign),
       [&] {
         return all_of([&] { return is_nonnegative_sign(sign(P.parameter(0))); },
@@ -126,12 +154,8 @@ Truth edge_edge_in_plane_contact(const Polys& P, SignOracle&& sign) {
                       [&] { return is_nonnegative_sign(sign(P.parameter(2))); },
                       [&] { return is_nonnegative_sign(sign(P.parameter(3))); });
       },
-      [&] {
-        return any_of([&] { return point_on_segment(P.endpoint_on_edge(0), sign); },
-                      [&] { return point_on_segment(P.endpoint_on_edge(1), sign); },
-                      [&] { return point_on_segment(P.endpoint_on_edge(2), sign); },
-                      [&] { return point_on_segment(P.endpoint_on_edge(3), sign); });
-      });
+      [&] { return endpoint_on_other_edge(P, sign); });
+  return refined(t, [&] { return endpoint_on_other_edge(P, sign); });
 }
 
 /// True for a vertex-face polynomial set (anything with normal(), barycentric(i) and

@@ -28,11 +28,18 @@
 //    0 and every other sign comes from the cell as above (narrowed by bisection of q). The
 //    answer is certain when every candidate is decided; the TOI only when the earliest
 //    contact is an exact point and no undecided or contacting cell starts before it.
+// 5. V not identically zero but uncertain in item 2, with a visible factorisation: when three
+//    of the four points share one coordinate for all t (two components of a point-on-segment
+//    cross product are exactly zero), V is a linear factor times the third component C_k, and
+//    the candidates are the roots of the two factors (factored_stage). At a root of C_k the
+//    rule's segment test has a sign known to be zero, which decides contacts exactly on an
+//    edge's line; a contact found there has a certified TOI (narrowed on C_k).
 #include "filter/interval_stage.hpp"
 
 #include <CGAL/Interval_nt.h>
 #include <boost/container/small_vector.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -260,6 +267,93 @@ StageResult moving_stage(const Polys& P, bool want_toi) {
   return {Verdict::no_collision, std::nullopt};
 }
 
+/// A point-on-segment test of the rule (a point X against a segment [u, v]) and the fourth
+/// point W of the query: rows of the query's row order (t0 rows; t1 is row + 4).
+struct SegmentTest {
+  int index;  ///< P.on_edge(index) (vertex-face) or P.endpoint_on_edge(index) (edge-edge)
+  int x, w;   ///< rows of X and W
+};
+// Vertex-face rows p, a, b, c: p on edge (a, b), (b, c), (c, a); W the opposite vertex.
+constexpr std::array<SegmentTest, 3> kVertexFaceTests{{{0, 0, 3}, {1, 0, 1}, {2, 0, 2}}};
+// Edge-edge rows a0, a1, b0, b1: a0 and a1 on edge b, b0 and b1 on edge a; W the other
+// endpoint of X's own edge.
+constexpr std::array<SegmentTest, 4> kEdgeEdgeTests{{{0, 0, 1}, {1, 1, 0}, {2, 2, 3}, {3, 3, 2}}};
+
+template <class Polys>
+const auto& segment_test(const Polys& P, int i) {
+  if constexpr (contact::is_vertex_face_polys<Polys>::value)
+    return P.on_edge(i);
+  else
+    return P.endpoint_on_edge(i);
+}
+
+/// The stage when V is not identically zero but factors visibly (file comment, item 5).
+/// V = +-(W - X) . C with C = (X - u) x (v - u) the cross product of a point-on-segment test
+/// (the volume of the four points, with X as base point). When two components of C are exactly
+/// zero polynomials (X, u, v share one coordinate for all t, as on a grid line), then
+/// V = +-(W - X)_k C_k exactly, and V's roots in [0, 1] are those of the linear factor
+/// f = (W - X)_k and of C_k. At a root of C_k, X is on the line uv, and C_k's sign is zero by
+/// construction: the rule's segment test decides there, where the barycentric numerators or
+/// segment parameters are exactly zero and uncertain in intervals.
+template <class Polys, class IntervalQuery>
+StageResult factored_stage(const Polys& P, const IntervalQuery& q, bool want_toi) {
+  constexpr bool vertex_face = contact::is_vertex_face_polys<Polys>::value;
+  const auto r = rows(q);
+  const auto tests = [] {
+    if constexpr (vertex_face) return kVertexFaceTests; else return kEdgeEdgeTests;
+  }();
+  for (const SegmentTest& test : tests) {
+    const auto& cross = segment_test(P, test.index).cross;
+    const std::array<const contact::Poly<Interval, 2>*, 3> component{&cross.x, &cross.y, &cross.z};
+    int k = -1, zeros = 0;
+    for (int j = 0; j < 3; ++j) {
+      if (exactly_zero(*component[j]))
+        ++zeros;
+      else
+        k = j;
+    }
+    if (zeros != 2) continue;
+    const auto coordinate = [k](const Vec3T<Interval>& v) { return k == 0 ? v.x : k == 1 ? v.y : v.z; };
+    const Interval w0 = coordinate(r[test.w]), w1 = coordinate(r[test.w + 4]);
+    const Interval x0 = coordinate(r[test.x]), x1 = coordinate(r[test.x + 4]);
+    const contact::Poly<Interval, 1> f{{w0 - x0, (w1 - w0) - (x1 - x0)}};
+    const contact::Poly<Interval, 2>& g = *component[k];
+    if (exactly_zero(f)) continue;  // V = 0 for all t: not this stage's case
+    RootCells f_cells, g_cells;
+    if (isolate_roots(f, f_cells) == Isolation::failed || isolate_roots(g, g_cells) == Isolation::failed) continue;
+    // The candidates in increasing order; overlapping cells of the two factors cannot be
+    // ordered here (a common root, or roots too close): leave the query to a later stage.
+    struct Candidate {
+      RootCell cell;
+      bool of_g;
+    };
+    boost::container::small_vector<Candidate, 3> candidates;
+    for (const RootCell& c : f_cells) candidates.push_back({c, false});
+    for (const RootCell& c : g_cells) candidates.push_back({c, true});
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& a, const Candidate& b) { return a.cell.lo < b.cell.lo; });
+    bool ordered = true;
+    for (std::size_t i = 1; i < candidates.size(); ++i) {
+      const RootCell &a = candidates[i - 1].cell, &b = candidates[i].cell;
+      ordered = ordered && (a.hi < b.lo || (a.hi == b.lo && !(a.is_point() && b.is_point())));
+    }
+    if (!ordered) return {};
+    for (Candidate& c : candidates) {
+      const CellVerdict v = c.of_g ? in_plane_verdict(P, g, true, c.cell) : in_plane_verdict(P, f, false, c.cell);
+      if (v == CellVerdict::uncertain) return {};  // the earliest undecided candidate blocks the rest
+      if (v == CellVerdict::no_contact) continue;
+      StageResult result{Verdict::collision, std::nullopt};
+      if (want_toi) {
+        const Narrowing n = c.of_g ? narrow(g, c.cell, 1100) : narrow(f, c.cell, 1100);
+        if (n == Narrowing::done) result.toi = TimeInterval{c.cell.lo, c.cell.hi};
+      }
+      return result;
+    }
+    return {Verdict::no_collision, std::nullopt};
+  }
+  return {};
+}
+
 /// The stage when V vanishes identically (coplanar for all t): see the file comment, item 4.
 template <class Polys>
 StageResult coplanar_stage(const Polys& P, bool want_toi) {
@@ -329,7 +423,14 @@ template <class IntervalQuery>
 StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
   const auto P = contact::polynomials(q);
   if (exactly_zero(P.volume())) return coplanar_stage(P, want_toi);
-  return moving_stage(P, want_toi);
+  const StageResult moving = moving_stage(P, want_toi);
+  const bool toi_missing = want_toi && moving.verdict == Verdict::collision && !moving.toi;
+  if (moving.verdict != Verdict::uncertain && !toi_missing) return moving;
+  // Uncertain, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
+  // a root it shares with a factor's): the factored view may decide or narrow on the factor.
+  const StageResult factored = factored_stage(P, q, want_toi);
+  if (factored.verdict == Verdict::uncertain || (toi_missing && !factored.toi)) return moving;
+  return factored;
 }
 
 }  // namespace
