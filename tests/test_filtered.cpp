@@ -506,7 +506,7 @@ TEST(FilteredAgreement, PowerOfTwoTranslations) {
 // ---------------------------------------------------------------------------------------------
 // 3. Random degenerate queries on small dyadic grids (fixed seed).
 //
-// 17 families, 250 queries of each kind per family (fewer for the two slow families): 7750
+// 18 families, 250 queries of each kind per family (fewer for the two slow families): 8250
 // queries, ~8 s in Release (measured). EXACTCCD_STRESS=n multiplies the counts.
 
 class Generator {
@@ -575,6 +575,28 @@ class Generator {
         kind == Kind::vertex_face ? std::array<std::size_t, 3>{0, 1, 2} : std::array<std::size_t, 3>{1, 2, 3};
     for (std::size_t i : on_plane)
       for (std::size_t t : {i, i + 4}) (axis == 0 ? r[t].x : axis == 1 ? r[t].y : r[t].z) = shared;
+    return r;
+  }
+
+  /// At t = 0 or t = 1 (random), three of the four points lie on one axis-parallel line (two
+  /// shared coordinates): p, b, c (vertex-face) or a1, b0, b1 (edge-edge), so V is exactly zero
+  /// at that end, but not computed exactly (full-significand doubles). The point is between the
+  /// other two along the line (contact at that end) about a third of the time.
+  Rows collinear_at_an_end(Kind kind) {
+    const auto coordinate = [this] { return std::ldexp(static_cast<double>(rng_() >> 11), -53) * 2 - 1; };
+    Rows r;
+    for (Vec3& v : r) v = {coordinate(), coordinate(), coordinate()};
+    const std::size_t offset = coin(50) ? 0 : 4;
+    const int free_axis = integer(0, 2);
+    const double s = coordinate(), t = coordinate();
+    const std::array<std::size_t, 3> on_line =
+        kind == Kind::vertex_face ? std::array<std::size_t, 3>{0, 2, 3} : std::array<std::size_t, 3>{1, 2, 3};
+    for (std::size_t i : on_line) {
+      Vec3& v = r[i + offset];
+      if (free_axis == 0) v.y = s, v.z = t;
+      if (free_axis == 1) v.x = s, v.z = t;
+      if (free_axis == 2) v.x = s, v.y = t;
+    }
     return r;
   }
 
@@ -800,6 +822,8 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
       {"static, one plane, non-dyadic grid step", [](Generator& g, Kind) { return g.static_grid(false); }},
       {"static, non-dyadic grid step", [](Generator& g, Kind) { return g.static_grid(true); }},
       {"three points sharing one coordinate", [](Generator& g, Kind k) { return g.shared_coordinate(k); }},
+      {"three points on an axis-parallel line at t0 or t1",
+       [](Generator& g, Kind k) { return g.collinear_at_an_end(k); }},
       {"one plane", [](Generator& g, Kind) { return g.in_plane(false); }},
       {"plane at t0, plane at t1", [](Generator& g, Kind) { return g.in_plane(true); }},
       {"parallel or collinear", [](Generator& g, Kind k) { return g.parallel_or_collinear(k); }},

@@ -63,7 +63,7 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
 
 struct VertexFace {
   static bool volume_excluded(const VertexFaceQuery& q) { return vertex_face_volume_excluded(q); }
-  static bool static_contact(const VertexFaceQuery& q) { return static_vertex_face_contact(q); }
+  static bool static_contact(const VertexFaceQuery& q) { return vertex_face_contact_at(q, 0); }
   static StageResult interval_stage(const VertexFaceQuery& q, bool want_toi) {
     return vertex_face_interval_stage(q, want_toi);
   }
@@ -78,7 +78,7 @@ struct VertexFace {
 
 struct EdgeEdge {
   static bool volume_excluded(const EdgeEdgeQuery& q) { return edge_edge_volume_excluded(q); }
-  static bool static_contact(const EdgeEdgeQuery& q) { return static_edge_edge_contact(q); }
+  static bool static_contact(const EdgeEdgeQuery& q) { return edge_edge_contact_at(q, 0); }
   static StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi) {
     return edge_edge_interval_stage(q, want_toi);
   }

@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "contact/contact_rule.hpp"
+#include "filter/static_stage.hpp"
 
 namespace exactccd::filter {
 namespace {
@@ -115,13 +116,17 @@ SignClass classify(const Interval& x) {
 
 /// Appends the roots in the cell [lo, hi] (Bernstein coefficients b) in increasing order; the
 /// roots at the cell's ends are the caller's. Descartes' rule in the Bernstein basis counts
-/// sign changes among the nonzero coefficients.
+/// sign changes among the nonzero coefficients. `first` / `last`, when not unknown, are the
+/// exact signs of b[0] / b[D] (the polynomial's values at lo / hi), known from elsewhere.
 template <int D>
-Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, RootCells& out) {
+Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, RootCells& out,
+                  SignClass first = SignClass::unknown, SignClass last = SignClass::unknown) {
   std::array<SignClass, D + 1> s{};
   bool certain = true, all_zero = true;
   for (int i = 0; i <= D; ++i) {
     s[i] = classify(b[i]);
+    if (i == 0 && s[i] == SignClass::unknown) s[i] = first;
+    if (i == D && s[i] == SignClass::unknown) s[i] = last;
     certain = certain && s[i] != SignClass::unknown;
     all_zero = all_zero && s[i] == SignClass::zero;
   }
@@ -144,21 +149,36 @@ Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, RootCe
   Bernstein<D> left, right;
   halve<D>(b, left, right);
   const double mid = lo + (hi - lo) / 2;  // exact: dyadic cells of [0, 1]
-  if (isolate<D>(left, lo, mid, depth + 1, out) == Isolation::failed) return Isolation::failed;
+  if (isolate<D>(left, lo, mid, depth + 1, out, s[0], SignClass::unknown) == Isolation::failed)
+    return Isolation::failed;
   if (classify(left[D]) == SignClass::zero) out.push_back(RootCell{mid, mid, 0});
-  return isolate<D>(right, mid, hi, depth + 1, out);
+  return isolate<D>(right, mid, hi, depth + 1, out, SignClass::unknown, s[D]);
+}
+
+SignClass sign_class(int sign) {
+  return sign > 0 ? SignClass::positive : sign < 0 ? SignClass::negative : SignClass::zero;
 }
 
 /// The roots in [0, 1] of a polynomial not identically zero, in increasing order, exact zeros
-/// at 0 and 1 included when include_ends.
-template <int D>
-Isolation isolate_roots(const contact::Poly<Interval, D>& p, RootCells& out,
-                        bool include_ends = true) {
+/// at 0 and 1 included when include_ends. `exact_sign_at_end(e)` (e = 0, 1), called only when
+/// the interval value at that end is uncertain, returns the exact sign there or kUnknownSign.
+template <int D, class EndSign>
+Isolation isolate_roots(const contact::Poly<Interval, D>& p, RootCells& out, bool include_ends,
+                        EndSign&& exact_sign_at_end) {
   const Bernstein<D> b = to_bernstein(p);
-  if (include_ends && classify(b[0]) == SignClass::zero) out.push_back(RootCell{0.0, 0.0, 0});
-  if (isolate<D>(b, 0.0, 1.0, 0, out) == Isolation::failed) return Isolation::failed;
-  if (include_ends && classify(b[D]) == SignClass::zero) out.push_back(RootCell{1.0, 1.0, 0});
+  SignClass first = classify(b[0]), last = classify(b[D]);
+  for (auto [end, s] : {std::pair<int, SignClass*>{0, &first}, {1, &last}})
+    if (*s == SignClass::unknown)
+      if (const int exact = exact_sign_at_end(end); exact != contact::kUnknownSign) *s = sign_class(exact);
+  if (include_ends && first == SignClass::zero) out.push_back(RootCell{0.0, 0.0, 0});
+  if (isolate<D>(b, 0.0, 1.0, 0, out, first, last) == Isolation::failed) return Isolation::failed;
+  if (include_ends && last == SignClass::zero) out.push_back(RootCell{1.0, 1.0, 0});
   return Isolation::complete;
+}
+
+template <int D>
+Isolation isolate_roots(const contact::Poly<Interval, D>& p, RootCells& out, bool include_ends = true) {
+  return isolate_roots(p, out, include_ends, [](int) { return contact::kUnknownSign; });
 }
 
 /// How far narrow() got.
@@ -242,15 +262,22 @@ bool exactly_zero(const contact::Poly<Interval, D>& p) {
   return true;
 }
 
-/// The stage when V is not identically zero: the roots of V in increasing order.
-template <class Polys>
-StageResult moving_stage(const Polys& P, bool want_toi) {
+/// The stage when V is not identically zero: the roots of V in increasing order. At t = 0 and
+/// t = 1 the configuration is static: where intervals are uncertain there, `ends` gives V's
+/// exact sign and the exact contact (CGAL's static predicates, static_stage.hpp).
+template <class Polys, class Ends>
+StageResult moving_stage(const Polys& P, const Ends& ends, bool want_toi) {
   RootCells cells;
-  if (isolate_roots(P.volume(), cells) == Isolation::failed || cells.size() > 3) return {};
+  if (isolate_roots(P.volume(), cells, true, [&](int end) { return ends.volume_sign(end); }) ==
+          Isolation::failed ||
+      cells.size() > 3)
+    return {};
   if (cells.empty()) return {Verdict::no_collision, std::nullopt};
   bool earlier_uncertain = false;
   for (RootCell cell : cells) {
-    const CellVerdict v = in_plane_verdict(P, P.volume(), false, cell);
+    CellVerdict v = in_plane_verdict(P, P.volume(), false, cell);
+    if (v == CellVerdict::uncertain && cell.is_point() && (cell.lo == 0.0 || cell.lo == 1.0))
+      v = ends.contact(cell.lo == 0.0 ? 0 : 1) ? CellVerdict::contact : CellVerdict::no_contact;
     if (v == CellVerdict::uncertain) {
       earlier_uncertain = true;
       continue;
@@ -419,11 +446,32 @@ StageResult coplanar_stage(const Polys& P, bool want_toi) {
 }
 
 /// The stage on one query.
-template <class IntervalQuery>
-StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
+/// Exact facts at t = 0 and t = 1 of a double query, for moving_stage. CGAL's static filters
+/// assume round-to-nearest: it is set for each call (this stage otherwise rounds upwards).
+template <class Query>
+struct ExactEnds {
+  const Query& q;
+  int volume_sign(int end) const {
+    CGAL::Protect_FPU_rounding<true> to_nearest(CGAL_FE_TONEAREST);
+    if constexpr (std::is_same_v<Query, VertexFaceQuery>)
+      return vertex_face_volume_sign_at(q, end);
+    else
+      return edge_edge_volume_sign_at(q, end);
+  }
+  bool contact(int end) const {
+    CGAL::Protect_FPU_rounding<true> to_nearest(CGAL_FE_TONEAREST);
+    if constexpr (std::is_same_v<Query, VertexFaceQuery>)
+      return vertex_face_contact_at(q, end);
+    else
+      return edge_edge_contact_at(q, end);
+  }
+};
+
+template <class IntervalQuery, class Query>
+StageResult interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi) {
   const auto P = contact::polynomials(q);
   if (exactly_zero(P.volume())) return coplanar_stage(P, want_toi);
-  const StageResult moving = moving_stage(P, want_toi);
+  const StageResult moving = moving_stage(P, ExactEnds<Query>{double_query}, want_toi);
   const bool toi_missing = want_toi && moving.verdict == Verdict::collision && !moving.toi;
   if (moving.verdict != Verdict::uncertain && !toi_missing) return moving;
   // Uncertain, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
@@ -437,12 +485,12 @@ StageResult interval_stage(const IntervalQuery& q, bool want_toi) {
 
 StageResult vertex_face_interval_stage(const VertexFaceQuery& q, bool want_toi) {
   CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
-  return interval_stage(to_interval_query<VertexFaceQueryT<Interval>>(q), want_toi);
+  return interval_stage(to_interval_query<VertexFaceQueryT<Interval>>(q), q, want_toi);
 }
 
 StageResult edge_edge_interval_stage(const EdgeEdgeQuery& q, bool want_toi) {
   CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
-  return interval_stage(to_interval_query<EdgeEdgeQueryT<Interval>>(q), want_toi);
+  return interval_stage(to_interval_query<EdgeEdgeQueryT<Interval>>(q), q, want_toi);
 }
 
 }  // namespace exactccd::filter

@@ -51,8 +51,9 @@ bool is_static(const EdgeEdgeQuery& q) {
          same(q.b1_t0, q.b1_t1);
 }
 
-bool static_vertex_face_contact(const VertexFaceQuery& q) {
-  const Point p = point(q.p_t0), a = point(q.a_t0), b = point(q.b_t0), c = point(q.c_t0);
+bool vertex_face_contact_at(const VertexFaceQuery& q, int end) {
+  const Point p = point(end ? q.p_t1 : q.p_t0), a = point(end ? q.a_t1 : q.a_t0),
+              b = point(end ? q.b_t1 : q.b_t0), c = point(end ? q.c_t1 : q.c_t0);
   if (CGAL::orientation(a, b, c, p) != CGAL::COPLANAR) return false;
   if (!CGAL::collinear(a, b, c)) {
     // Proper triangle, p in its plane: p is in the closed triangle iff, for each edge, p is not
@@ -66,13 +67,27 @@ bool static_vertex_face_contact(const VertexFaceQuery& q) {
   return on_segment(p, a, b) || on_segment(p, b, c) || on_segment(p, c, a);
 }
 
-bool static_edge_edge_contact(const EdgeEdgeQuery& q) {
-  const Point p0 = point(q.a0_t0), p1 = point(q.a1_t0), q0 = point(q.b0_t0), q1 = point(q.b1_t0);
+bool edge_edge_contact_at(const EdgeEdgeQuery& q, int end) {
+  const Point p0 = point(end ? q.a0_t1 : q.a0_t0), p1 = point(end ? q.a1_t1 : q.a1_t0),
+              q0 = point(end ? q.b0_t1 : q.b0_t0), q1 = point(end ? q.b1_t1 : q.b1_t0);
   const bool a_point = p0 == p1, b_point = q0 == q1;
   if (a_point) return on_segment(p0, q0, q1);
   if (b_point) return on_segment(q0, p0, p1);
   if (CGAL::orientation(p0, p1, q0, q1) != CGAL::COPLANAR) return false;
   return coplanar_segments_meet(p0, p1, q0, q1);
+}
+
+// CGAL's orientation(p, q, r, s) is the sign of det[q - p, r - p, s - p], and
+// det[u, v, w] = u . (v x w): V = (b - a) . ((c - a) x (p - a)) = det[b - a, c - a, p - a] is
+// orientation(a, b, c, p); V = (a1 - a0) . ((b0 - a0) x (b1 - a0)) is orientation(a0, a1, b0, b1).
+int vertex_face_volume_sign_at(const VertexFaceQuery& q, int end) {
+  return static_cast<int>(CGAL::orientation(point(end ? q.a_t1 : q.a_t0), point(end ? q.b_t1 : q.b_t0),
+                                            point(end ? q.c_t1 : q.c_t0), point(end ? q.p_t1 : q.p_t0)));
+}
+
+int edge_edge_volume_sign_at(const EdgeEdgeQuery& q, int end) {
+  return static_cast<int>(CGAL::orientation(point(end ? q.a0_t1 : q.a0_t0), point(end ? q.a1_t1 : q.a1_t0),
+                                            point(end ? q.b0_t1 : q.b0_t0), point(end ? q.b1_t1 : q.b1_t0)));
 }
 
 }  // namespace exactccd::filter

@@ -19,12 +19,20 @@ bool is_static(const VertexFaceQuery& q);
 /// True when every point of the query is at the same position at t0 and t1.
 bool is_static(const EdgeEdgeQuery& q);
 
-/// Exact contact of a static vertex-face query (is_static(q) must hold): p in the closed convex
-/// hull of a, b, c (a degenerate triangle is the segment or point it spans).
-bool static_vertex_face_contact(const VertexFaceQuery& q);
+/// Exact vertex-face contact at t = `end` (0 or 1): p in the closed convex hull of a, b, c then
+/// (a degenerate triangle is the segment or point it spans). For a static query, the answer.
+bool vertex_face_contact_at(const VertexFaceQuery& q, int end);
 
-/// Exact contact of a static edge-edge query (is_static(q) must hold): the closed segments
-/// share a point (a zero-length edge is a point).
-bool static_edge_edge_contact(const EdgeEdgeQuery& q);
+/// Exact edge-edge contact at t = `end` (0 or 1): the closed segments share a point then (a
+/// zero-length edge is a point). For a static query, the answer.
+bool edge_edge_contact_at(const EdgeEdgeQuery& q, int end);
+
+/// The exact sign (-1, 0, 1) of the volume V at t = `end` (0 or 1), V as in
+/// contact_polynomials.hpp: the orientation of a, b, c, p then.
+int vertex_face_volume_sign_at(const VertexFaceQuery& q, int end);
+
+/// The exact sign (-1, 0, 1) of the volume V at t = `end` (0 or 1): the orientation of a0, a1,
+/// b0, b1 then.
+int edge_edge_volume_sign_at(const EdgeEdgeQuery& q, int end);
 
 }  // namespace exactccd::filter
