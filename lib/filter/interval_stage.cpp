@@ -28,7 +28,8 @@
 //    0 and every other sign comes from the cell as above (narrowed by bisection of q). The
 //    answer is certain when every candidate is decided; the TOI only when the earliest
 //    contact is an exact point and no undecided or contacting cell starts before it.
-// 5. V not identically zero but uncertain in item 2, with a visible factorisation: when three
+// 5. V not identically zero but uncertain in item 2: if the in-plane rule is certainly false over
+//    all of [0, 1], no collision (whatever V's roots). Else, with a visible factorisation: when three
 //    of the four points share one coordinate for all t (two components of a point-on-segment
 //    cross product are exactly zero), V is a linear factor times the third component C_k, and
 //    the candidates are the roots of the two factors (factored_stage). At a root of C_k the
@@ -474,6 +475,13 @@ StageResult interval_stage(const IntervalQuery& q, const Query& double_query, bo
   const StageResult moving = moving_stage(P, ExactEnds<Query>{double_query}, want_toi);
   const bool toi_missing = want_toi && moving.verdict == Verdict::collision && !moving.toi;
   if (moving.verdict != Verdict::uncertain && !toi_missing) return moving;
+  // Contact needs V(t) = 0 and the in-plane rule at the same t: a rule certainly false at every
+  // t of [0, 1] (its deciding sign certified over the whole interval) excludes contact wherever
+  // V's roots are. Decides nearly coplanar motion (resting contact, V within rounding of 0 for
+  // all t, roots not isolable) when the point stays clearly outside the triangle's edge.
+  if (moving.verdict == Verdict::uncertain &&
+      contact::in_plane_contact(P, IntervalSignOracle{Interval(0.0, 1.0)}) == contact::Truth::no)
+    return {Verdict::no_collision, std::nullopt};
   // Uncertain, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
   // a root it shares with a factor's): the factored view may decide or narrow on the factor.
   const StageResult factored = factored_stage(P, q, want_toi);
