@@ -67,13 +67,19 @@ int certain_sign(const Interval& x) {
   return 0;  // contains zero (or NaN bounds)
 }
 
-/// Bernstein coefficients on [0, 1]: b_j = sum_{i <= j} C(j, i) / C(D, i) c_i.
+/// lcm of C(D, 0..D): 1, 1, 2, 3, 12.
+constexpr int kBinomialLcm[5] = {1, 1, 2, 3, 12};
+
+/// Bernstein coefficients on [0, 1] times L = kBinomialLcm[D] (a positive factor: same signs):
+/// L b_j = sum_{i <= j} C(j, i) (L / C(D, i)) c_i. Every multiplier is a small integer, so with
+/// exactly known coefficients (dyadic input) the result is exact; dividing by C(D, i) instead
+/// would round 1/3, 1/4, 1/6 and hide exact zeros (a double root at t = 1/2).
 template <int D>
 Bernstein<D> to_bernstein(const contact::Poly<Interval, D>& p) {
   Bernstein<D> b;
   for (int j = 0; j <= D; ++j) {
     Interval sum(0);
-    for (int i = 0; i <= j; ++i) sum = sum + p.c[i] * kBinomial[j][i] / kBinomial[D][i];
+    for (int i = 0; i <= j; ++i) sum = sum + p.c[i] * (kBinomial[j][i] * (kBinomialLcm[D] / kBinomial[D][i]));
     b[j] = sum;
   }
   return b;
