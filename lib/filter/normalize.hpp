@@ -24,6 +24,14 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
   if (largest == 0) return q;
   const int s = -std::ilogb(largest);
   if (s == 0) return q;
+  if (s > 0 && s <= 1023) {
+    // Scaling up by a normal power of two: every product is exact (no underflow, and no
+    // overflow since the largest result is below 2). One multiplication per coordinate.
+    const double factor = std::ldexp(1.0, s);
+    for (Vec3& p : r) p = {p.x * factor, p.y * factor, p.z * factor};
+    scaled = true;
+    return from_rows<Query>(r);
+  }
   for (Vec3& p : r)
     for (double* x : {&p.x, &p.y, &p.z}) {
       const double y = std::ldexp(*x, s);
