@@ -296,7 +296,36 @@ double to_double_down(const Dyadic& d) {
   return x.get_d();  // truncation: rounds down for x >= 0
 }
 
+/// Safeguarded Newton iteration in long double on [lo, hi] for the root of the polynomial with
+/// coefficients c (sign at lo: sign_at_lo): the bracket shrinks with every step; a step leaving
+/// it is replaced by bisection. Converges in a few steps at a simple root, where plain
+/// bisection takes ~64.
+long double newton_guess(const std::array<long double, 5>& c, int deg, long double lo, long double hi,
+                         int sign_at_lo) {
+  long double approx = lo + (hi - lo) / 2;
+  for (int i = 0; i < 100 && lo < hi; ++i) {
+    const auto [v, dv] = approximate_value_and_slope(c, deg, approx);
+    if (v == 0) break;
+    if ((v > 0) == (sign_at_lo > 0))
+      lo = approx;
+    else
+      hi = approx;
+    long double next = approx - v / dv;
+    if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;  // also catches dv == 0 and NaN
+    if (next == approx || next <= lo || next >= hi) break;     // no representable progress
+    const bool converged = std::fabs(next - approx) <= std::ldexp(std::fabs(next), -62);
+    approx = next;
+    if (converged) break;
+  }
+  return approx;
+}
+
 }  // namespace
+
+double approximate_root(const IntegerPoly& p, double lo, double hi, int sign_at_lo) {
+  const double guess = static_cast<double>(newton_guess(scaled_coefficients(p), p.deg, lo, hi, sign_at_lo));
+  return std::min(std::max(guess, lo), hi);
+}
 
 namespace {
 
@@ -311,25 +340,9 @@ int compare(const Dyadic& x, const Dyadic& y) {
 void refine_with_approximation(const IntegerPoly& p, IsolatedRoot& r) {
   if (r.exact) return;
   const std::array<long double, 5> c = scaled_coefficients(p);
-  // A guess, checked exactly below: safeguarded Newton iteration in long double on the cell
-  // (the bracket shrinks with every step; a step leaving it is replaced by bisection). Converges
-  // in a few steps at a simple root, where plain bisection took ~64.
-  long double lo = to_double_down(r.lo), hi = std::nextafter(to_double_down(r.hi), 2.0);
-  long double approx = lo + (hi - lo) / 2;
-  for (int i = 0; i < 100 && lo < hi; ++i) {
-    const auto [v, dv] = approximate_value_and_slope(c, p.deg, approx);
-    if (v == 0) break;
-    if ((v > 0) == (r.sign_at_lo > 0))
-      lo = approx;
-    else
-      hi = approx;
-    long double next = approx - v / dv;
-    if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;  // also catches dv == 0 and NaN
-    if (next == approx || next <= lo || next >= hi) break;     // no representable progress
-    const bool converged = std::fabs(next - approx) <= std::ldexp(std::fabs(next), -62);
-    approx = next;
-    if (converged) break;
-  }
+  // A guess, checked exactly below.
+  const long double approx =
+      newton_guess(c, p.deg, to_double_down(r.lo), std::nextafter(to_double_down(r.hi), 2.0), r.sign_at_lo);
   const auto inside = [&](const Dyadic& x) { return compare(r.lo, x) < 0 && compare(x, r.hi) < 0; };
   const double guess = static_cast<double>(approx);
   for (double d : {guess, std::nextafter(guess, 0.0), std::nextafter(guess, 2.0)}) {

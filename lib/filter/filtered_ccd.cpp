@@ -49,6 +49,8 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
     if (interval.verdict == Verdict::no_collision || !want_toi || interval.toi)
       return answer(interval);
     count(counters, &StageCounters::toi_refined);  // collision certain, TOI not yet
+    if (interval.toi_cell)  // the TOI is V's simple root in this cell: narrow it exactly
+      if (auto toi = Kind::toi_in_cell(q, *interval.toi_cell)) return toi;
   }
   const StageResult integer = Kind::integer_stage(q, want_toi);
   if (integer.verdict != Verdict::uncertain) {
@@ -70,6 +72,9 @@ struct VertexFace {
   static StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) {
     return vertex_face_integer_stage(q, want_toi);
   }
+  static std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& c) {
+    return vertex_face_toi_in_cell(q, c);
+  }
   static bool exact_ccd(const RationalVertexFaceQuery& q) { return exact::vertex_face_ccd(q); }
   static std::optional<TimeInterval> exact_toi(const RationalVertexFaceQuery& q) {
     return exact::vertex_face_toi(q);
@@ -84,6 +89,9 @@ struct EdgeEdge {
   }
   static StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) {
     return edge_edge_integer_stage(q, want_toi);
+  }
+  static std::optional<TimeInterval> toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& c) {
+    return edge_edge_toi_in_cell(q, c);
   }
   static bool exact_ccd(const RationalEdgeEdgeQuery& q) { return exact::edge_edge_ccd(q); }
   static std::optional<TimeInterval> exact_toi(const RationalEdgeEdgeQuery& q) {

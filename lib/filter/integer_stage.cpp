@@ -318,7 +318,62 @@ StageResult integer_stage(const IntegerQuery& q, const Query& double_query, bool
   return {Verdict::collision, best};
 }
 
+/// The tightest double interval around the only root of v in the open cell (lo, hi) (lo, hi
+/// doubles, v's sign at lo nonzero and known, the opposite at hi): a long-double guess picks a
+/// double d, exact signs of v at d and its neighbour on the root's side usually settle it in two
+/// evaluations; otherwise bisection over the doubles of the cell, one exact sign per step.
+TimeInterval tightest_enclosure(const IntegerPoly& v, double lo, double hi, int sign_at_lo) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto sign = [&v](double t) { return exact::sign_at(v, t); };
+  const double guess = exact::approximate_root(v, lo, hi, sign_at_lo);
+  if (lo < guess && guess < hi) {
+    const int s = sign(guess);
+    if (s == 0) return {guess, guess};
+    if (s == sign_at_lo) {
+      lo = guess;
+      const double next = std::nextafter(guess, kInf);
+      if (next >= hi) return {lo, hi};
+      const int s_next = sign(next);
+      if (s_next == 0) return {next, next};
+      if (s_next != sign_at_lo) return {guess, next};
+      lo = next;
+    } else {
+      hi = guess;
+      const double previous = std::nextafter(guess, -kInf);
+      if (previous <= lo) return {lo, hi};
+      const int s_previous = sign(previous);
+      if (s_previous == 0) return {previous, previous};
+      if (s_previous == sign_at_lo) return {previous, guess};
+      hi = previous;
+    }
+  }
+  while (std::nextafter(lo, kInf) < hi) {
+    double mid = lo + (hi - lo) / 2;
+    if (!(lo < mid && mid < hi)) mid = std::nextafter(lo, kInf);
+    const int s = sign(mid);
+    if (s == 0) return {mid, mid};
+    (s == sign_at_lo ? lo : hi) = mid;
+  }
+  return {lo, hi};
+}
+
+template <class IntegerQuery, class Query>
+std::optional<TimeInterval> toi_in_cell(const Query& q, const VolumeRootCell& cell) {
+  if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
+  const IntegerPoly v = integer_poly(contact::polynomials(to_integer_query<IntegerQuery>(q)).volume());
+  if (v.is_zero()) return std::nullopt;
+  return tightest_enclosure(v, cell.lo, cell.hi, cell.sign_at_lo);
+}
+
 }  // namespace
+
+std::optional<TimeInterval> vertex_face_toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& cell) {
+  return toi_in_cell<VertexFaceQueryT<Integer>>(q, cell);
+}
+
+std::optional<TimeInterval> edge_edge_toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& cell) {
+  return toi_in_cell<EdgeEdgeQueryT<Integer>>(q, cell);
+}
 
 StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi) {
   try {

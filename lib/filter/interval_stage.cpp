@@ -290,11 +290,15 @@ StageResult moving_stage(const Polys& P, const Ends& ends, bool want_toi) {
       continue;
     }
     if (v == CellVerdict::no_contact) continue;
-    StageResult r{Verdict::collision, std::nullopt};
+    StageResult r{Verdict::collision};
     // The TOI is this root only if no earlier root is uncertain; narrowing may still fail
-    // (e.g. the root is itself a double), then a later stage encloses it.
-    if (want_toi && !earlier_uncertain && narrow(P.volume(), cell, 1100) == Narrowing::done)
-      r.toi = TimeInterval{cell.lo, cell.hi};
+    // (V's sign uncertain close to the root), then a later stage narrows this cell exactly.
+    if (want_toi && !earlier_uncertain) {
+      if (narrow(P.volume(), cell, 1100) == Narrowing::done)
+        r.toi = TimeInterval{cell.lo, cell.hi};
+      else if (!cell.is_point())
+        r.toi_cell = VolumeRootCell{cell.lo, cell.hi, cell.sign_at_lo};
+    }
     return r;
   }
   if (earlier_uncertain) return {};
