@@ -28,16 +28,25 @@ struct PointOnSegmentPolys {
   Poly<NT, 2> dot;
 };
 
-/// The linear motion of a point from its position at t = 0 to its position at t = 1.
+/// The motion of the vector from point `from` to point `to` (rows of a query: the point at t0,
+/// and at t1 four rows later): (to - from)(t) = d0 + t (d1 - d0) with d0, d1 the differences
+/// at t0 and t1. Differencing the positions first (rather than the two points' motions) keeps
+/// the terms small where points are close to each other and far from the origin: with interval
+/// or floating-point coefficients, each difference of nearby doubles is exact (Sterbenz) and the
+/// rounding is relative to the edge length, not to the coordinates; exactly equal coordinates
+/// give exactly zero coefficients. Exact number types get the same polynomial either way.
 template <class NT>
-PolyVec3<NT, 1> point_motion(const Vec3T<NT>& x0, const Vec3T<NT>& x1) {
-  return {linear_motion(x0.x, x1.x), linear_motion(x0.y, x1.y), linear_motion(x0.z, x1.z)};
+PolyVec3<NT, 1> relative_motion(const std::array<Vec3T<NT>, 8>& rows, int from, int to) {
+  const Vec3T<NT>&u0 = rows[from], &u1 = rows[from + 4], &v0 = rows[to], &v1 = rows[to + 4];
+  return {linear_motion(NT(v0.x - u0.x), NT(v1.x - u1.x)), linear_motion(NT(v0.y - u0.y), NT(v1.y - u1.y)),
+          linear_motion(NT(v0.z - u0.z), NT(v1.z - u1.z))};
 }
 
+/// "q on [u, v]" from the relative motions u -> q, u -> v and q -> v.
 template <class NT>
-PointOnSegmentPolys<NT> point_on_segment_polys(const PolyVec3<NT, 1>& q, const PolyVec3<NT, 1>& u,
-                                               const PolyVec3<NT, 1>& v) {
-  return {cross(q - u, v - u), dot(q - u, v - q)};
+PointOnSegmentPolys<NT> point_on_segment_polys(const PolyVec3<NT, 1>& uq, const PolyVec3<NT, 1>& uv,
+                                               const PolyVec3<NT, 1>& qv) {
+  return {cross(uq, uv), dot(uq, qv)};
 }
 
 /// Returns the cached value, computing it with make() on first use.
@@ -51,44 +60,42 @@ const T& cached(std::optional<T>& slot, Make&& make) {
 template <class NT>
 class VertexFacePolys {
  public:
-  explicit VertexFacePolys(const VertexFaceQueryT<NT>& q)
-      : p_(point_motion(q.p_t0, q.p_t1)),
-        a_(point_motion(q.a_t0, q.a_t1)),
-        b_(point_motion(q.b_t0, q.b_t1)),
-        c_(point_motion(q.c_t0, q.c_t1)) {}
+  explicit VertexFacePolys(const VertexFaceQueryT<NT>& q) : rows_(rows(q)) {}
 
   /// V = (b - a) . ((c - a) x (p - a)): zero iff the four points are coplanar.
   const Poly<NT, 3>& volume() const {
-    return cached(volume_, [&] { return dot(b_ - a_, cross(c_ - a_, p_ - a_)); });
+    return cached(volume_, [&] { return dot(rel(kA, kB), cross(rel(kA, kC), rel(kA, kP))); });
   }
   /// n = (b - a) x (c - a): zero iff the triangle is degenerate.
   const PolyVec3<NT, 2>& normal() const {
-    return cached(normal_, [&] { return cross(b_ - a_, c_ - a_); });
+    return cached(normal_, [&] { return cross(rel(kA, kB), rel(kA, kC)); });
   }
   /// n . (e_i x (p - v_i)) for the edges (a, b), (b, c), (c, a): |n|^2 times the barycentric
   /// coordinate of p opposite the edge, when p is in the plane.
   const Poly<NT, 4>& barycentric(int i) const {
     return cached(barycentric_[i], [&] {
-      const auto& [u, v] = edge(i);
-      return dot(normal(), cross(v - u, p_ - u));
+      const auto [u, v] = edge(i);
+      return dot(normal(), cross(rel(u, v), rel(u, kP)));
     });
   }
   /// "p on the closed edge i" (see PointOnSegmentPolys).
   const PointOnSegmentPolys<NT>& on_edge(int i) const {
     return cached(on_edge_[i], [&] {
-      const auto& [u, v] = edge(i);
-      return point_on_segment_polys(p_, u, v);
+      const auto [u, v] = edge(i);
+      return point_on_segment_polys(rel(u, kP), rel(u, v), rel(kP, v));
     });
   }
 
  private:
-  std::pair<const PolyVec3<NT, 1>&, const PolyVec3<NT, 1>&> edge(int i) const {
-    if (i == 0) return {a_, b_};
-    if (i == 1) return {b_, c_};
-    return {c_, a_};
+  static constexpr int kP = 0, kA = 1, kB = 2, kC = 3;  // rows at t0 (t1: four rows later)
+  static std::pair<int, int> edge(int i) {
+    if (i == 0) return {kA, kB};
+    if (i == 1) return {kB, kC};
+    return {kC, kA};
   }
+  PolyVec3<NT, 1> rel(int from, int to) const { return relative_motion(rows_, from, to); }
 
-  PolyVec3<NT, 1> p_, a_, b_, c_;
+  std::array<Vec3T<NT>, 8> rows_;
   mutable std::optional<Poly<NT, 3>> volume_;
   mutable std::optional<PolyVec3<NT, 2>> normal_;
   mutable std::array<std::optional<Poly<NT, 4>>, 3> barycentric_;
@@ -101,26 +108,22 @@ class VertexFacePolys {
 template <class NT>
 class EdgeEdgePolys {
  public:
-  explicit EdgeEdgePolys(const EdgeEdgeQueryT<NT>& q)
-      : a0_(point_motion(q.a0_t0, q.a0_t1)),
-        a1_(point_motion(q.a1_t0, q.a1_t1)),
-        b0_(point_motion(q.b0_t0, q.b0_t1)),
-        b1_(point_motion(q.b1_t0, q.b1_t1)) {}
+  explicit EdgeEdgePolys(const EdgeEdgeQueryT<NT>& q) : rows_(rows(q)) {}
 
   /// V = (a1 - a0) . ((b0 - a0) x (b1 - a0)): zero iff the four points are coplanar.
   const Poly<NT, 3>& volume() const {
-    return cached(volume_, [&] { return dot(a1_ - a0_, cross(b0_ - a0_, b1_ - a0_)); });
+    return cached(volume_, [&] { return dot(rel(kA0, kA1), cross(rel(kA0, kB0), rel(kA0, kB1))); });
   }
   /// w = da x db: zero iff the edges are parallel or one has zero length.
   const PolyVec3<NT, 2>& direction_cross() const {
-    return cached(direction_cross_, [&] { return cross(a1_ - a0_, b1_ - b0_); });
+    return cached(direction_cross_, [&] { return cross(rel(kA0, kA1), rel(kB0, kB1)); });
   }
   /// U, D - U, W, D - W for i = 0..3: all >= 0 iff alpha = U / D and beta = W / D are in [0, 1].
   const Poly<NT, 4>& parameter(int i) const {
     return cached(parameter_[i], [&] {
       // U (i < 2) or W (i >= 2), each built once and shared by its pair.
       const Poly<NT, 4>& numerator = cached(numerator_[i / 2], [&] {
-        return dot(cross(b0_ - a0_, i < 2 ? b1_ - b0_ : a1_ - a0_), direction_cross());
+        return dot(cross(rel(kA0, kB0), i < 2 ? rel(kB0, kB1) : rel(kA0, kA1)), direction_cross());
       });
       if (i % 2 == 0) return numerator;
       const Poly<NT, 4>& d = cached(squared_norm_, [&] { return dot(direction_cross(), direction_cross()); });
@@ -130,17 +133,17 @@ class EdgeEdgePolys {
   /// a0 on edge b, a1 on edge b, b0 on edge a, b1 on edge a, for i = 0..3.
   const PointOnSegmentPolys<NT>& endpoint_on_edge(int i) const {
     return cached(endpoint_on_edge_[i], [&] {
-      switch (i) {
-        case 0: return point_on_segment_polys(a0_, b0_, b1_);
-        case 1: return point_on_segment_polys(a1_, b0_, b1_);
-        case 2: return point_on_segment_polys(b0_, a0_, a1_);
-        default: return point_on_segment_polys(b1_, a0_, a1_);
-      }
+      // The point q = row i against the other edge [u, v].
+      const int q = i, u = i < 2 ? kB0 : kA0, v = i < 2 ? kB1 : kA1;
+      return point_on_segment_polys(rel(u, q), rel(u, v), rel(q, v));
     });
   }
 
  private:
-  PolyVec3<NT, 1> a0_, a1_, b0_, b1_;
+  static constexpr int kA0 = 0, kA1 = 1, kB0 = 2, kB1 = 3;  // rows at t0 (t1: four rows later)
+  PolyVec3<NT, 1> rel(int from, int to) const { return relative_motion(rows_, from, to); }
+
+  std::array<Vec3T<NT>, 8> rows_;
   mutable std::optional<Poly<NT, 3>> volume_;
   mutable std::optional<PolyVec3<NT, 2>> direction_cross_;
   mutable std::array<std::optional<Poly<NT, 4>>, 2> numerator_;  // U, W

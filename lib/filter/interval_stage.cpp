@@ -354,7 +354,7 @@ StageResult factored_stage(const Polys& P, const IntervalQuery& q, bool want_toi
     const auto coordinate = [k](const Vec3T<Interval>& v) { return k == 0 ? v.x : k == 1 ? v.y : v.z; };
     const Interval w0 = coordinate(r[test.w]), w1 = coordinate(r[test.w + 4]);
     const Interval x0 = coordinate(r[test.x]), x1 = coordinate(r[test.x + 4]);
-    const contact::Poly<Interval, 1> f{{w0 - x0, (w1 - w0) - (x1 - x0)}};
+    const contact::Poly<Interval, 1> f = contact::linear_motion(w0 - x0, w1 - x1);  // as relative_motion
     const contact::Poly<Interval, 2>& g = *component[k];
     if (exactly_zero(f)) continue;  // V = 0 for all t: not this stage's case
     RootCells f_cells, g_cells;
