@@ -322,9 +322,13 @@ long double newton_guess(const std::array<long double, 5>& c, int deg, long doub
 
 }  // namespace
 
-double approximate_root(const IntegerPoly& p, double lo, double hi, int sign_at_lo) {
-  const double guess = static_cast<double>(newton_guess(scaled_coefficients(p), p.deg, lo, hi, sign_at_lo));
+double approximate_root(const std::array<long double, 5>& c, int deg, double lo, double hi, int sign_at_lo) {
+  const double guess = static_cast<double>(newton_guess(c, deg, lo, hi, sign_at_lo));
   return std::min(std::max(guess, lo), hi);
+}
+
+double approximate_root(const IntegerPoly& p, double lo, double hi, int sign_at_lo) {
+  return approximate_root(scaled_coefficients(p), p.deg, lo, hi, sign_at_lo);
 }
 
 namespace {

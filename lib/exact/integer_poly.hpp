@@ -100,6 +100,10 @@ constexpr unsigned kRefinedCellBits = 56;  // long-double guesses of ill-conditi
 /// safeguarded Newton iteration. Returns a double in [lo, hi].
 double approximate_root(const IntegerPoly& p, double lo, double hi, int sign_at_lo);
 
+/// The same for the polynomial c[0] + c[1] t + ... + c[deg] t^deg given in long double (an
+/// approximation of the exact one: the guess is only a guess either way).
+double approximate_root(const std::array<long double, 5>& c, int deg, double lo, double hi, int sign_at_lo);
+
 /// Halves the cell of a non-exact root once (exact sign of p at the midpoint); the root becomes
 /// exact when the midpoint is the root.
 void bisect(const IntegerPoly& p, IsolatedRoot& r);

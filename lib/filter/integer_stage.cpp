@@ -30,6 +30,7 @@
 
 #include "contact/contact_rule.hpp"
 #include "exact/integer_poly.hpp"
+#include "filter/volume_sign.hpp"
 
 namespace exactccd::filter {
 namespace {
@@ -318,14 +319,14 @@ StageResult integer_stage(const IntegerQuery& q, const Query& double_query, bool
   return {Verdict::collision, best};
 }
 
-/// The tightest double interval around the only root of v in the open cell (lo, hi) (lo, hi
-/// doubles, v's sign at lo nonzero and known, the opposite at hi): a long-double guess picks a
-/// double d, exact signs of v at d and its neighbour on the root's side usually settle it in two
-/// evaluations; otherwise bisection over the doubles of the cell, one exact sign per step.
-TimeInterval tightest_enclosure(const IntegerPoly& v, double lo, double hi, int sign_at_lo) {
+/// The tightest double interval around the only root of V in the open cell (lo, hi) (lo, hi
+/// doubles, V's sign at lo nonzero and known, the opposite at hi). `sign(t)` is V's exact sign
+/// at a double t. A long-double guess picks a double d; the signs at d and at its neighbour
+/// on the root's side usually settle it in two evaluations; otherwise bisection over the
+/// doubles of the cell, one sign per step.
+template <class Sign>
+TimeInterval tightest_enclosure(double guess, double lo, double hi, int sign_at_lo, Sign&& sign) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  const auto sign = [&v](double t) { return exact::sign_at(v, t); };
-  const double guess = exact::approximate_root(v, lo, hi, sign_at_lo);
   if (lo < guess && guess < hi) {
     const int s = sign(guess);
     if (s == 0) return {guess, guess};
@@ -357,22 +358,43 @@ TimeInterval tightest_enclosure(const IntegerPoly& v, double lo, double hi, int 
   return {lo, hi};
 }
 
-template <class IntegerQuery, class Query>
-std::optional<TimeInterval> toi_in_cell(const Query& q, const VolumeRootCell& cell) {
+template <class IntegerQuery, class Query, class FastSign>
+std::optional<TimeInterval> toi_in_cell(const Query& q, const VolumeRootCell& cell, FastSign&& fast_sign) {
   if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
-  const IntegerPoly v = integer_poly(contact::polynomials(to_integer_query<IntegerQuery>(q)).volume());
-  if (v.is_zero()) return std::nullopt;
-  return tightest_enclosure(v, cell.lo, cell.hi, cell.sign_at_lo);
+  // The guess from V in long double (built from the doubles; only a guess).
+  using LongQuery = std::conditional_t<std::is_same_v<Query, VertexFaceQuery>, VertexFaceQueryT<long double>,
+                                       EdgeEdgeQueryT<long double>>;
+  std::array<Vec3T<long double>, 8> long_rows;
+  {
+    const auto r = rows(q);
+    for (std::size_t i = 0; i < r.size(); ++i) long_rows[i] = {r[i].x, r[i].y, r[i].z};
+  }
+  const auto approximate = contact::polynomials(from_rows<LongQuery>(long_rows)).volume();
+  std::array<long double, 5> c{};
+  for (int i = 0; i <= 3; ++i) c[static_cast<std::size_t>(i)] = approximate.c[static_cast<std::size_t>(i)];
+  const double guess = exact::approximate_root(c, 3, cell.lo, cell.hi, cell.sign_at_lo);
+  // Signs: double-double first (certified, usually decisive), exact V in GMP on demand.
+  std::optional<IntegerPoly> v;
+  const auto sign = [&](double t) {
+    if (const int s = fast_sign(q, t); s != contact::kUnknownSign) return s;
+    if (!v) v = integer_poly(contact::polynomials(to_integer_query<IntegerQuery>(q)).volume());
+    return exact::sign_at(*v, t);
+  };
+  return tightest_enclosure(guess, cell.lo, cell.hi, cell.sign_at_lo, sign);
 }
 
 }  // namespace
 
 std::optional<TimeInterval> vertex_face_toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& cell) {
-  return toi_in_cell<VertexFaceQueryT<Integer>>(q, cell);
+  return toi_in_cell<VertexFaceQueryT<Integer>>(q, cell, [](const VertexFaceQuery& x, double t) {
+    return vertex_face_volume_sign(x, t);
+  });
 }
 
 std::optional<TimeInterval> edge_edge_toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& cell) {
-  return toi_in_cell<EdgeEdgeQueryT<Integer>>(q, cell);
+  return toi_in_cell<EdgeEdgeQueryT<Integer>>(q, cell, [](const EdgeEdgeQuery& x, double t) {
+    return edge_edge_volume_sign(x, t);
+  });
 }
 
 StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi) {
