@@ -57,6 +57,11 @@ template <int D>
 using Bernstein = std::array<Interval, D + 1>;
 
 constexpr int kMaxSubdivisionDepth = 30;  // cells of width 2^-30; closer roots go to exact
+// Halvings spent narrowing a TOI cell in intervals before handing it to the double-double /
+// exact narrowing (toi_in_cell): interval signs of V fail a few bits short of adjacent doubles
+// for most roots (design.md, 5.2), so a long interval bisection mostly wastes time; 16 still
+// finds exact dyadic roots of small-integer input (t = 1/2, 3/8, ...) here.
+constexpr int kToiHalvings = 16;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kBinomial[5][5] = {
     {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
@@ -294,7 +299,7 @@ StageResult moving_stage(const Polys& P, const Ends& ends, bool want_toi) {
     // The TOI is this root only if no earlier root is uncertain; narrowing may still fail
     // (V's sign uncertain close to the root), then a later stage narrows this cell exactly.
     if (want_toi && !earlier_uncertain) {
-      if (narrow(P.volume(), cell, 1100) == Narrowing::done)
+      if (narrow(P.volume(), cell, kToiHalvings) == Narrowing::done)
         r.toi = TimeInterval{cell.lo, cell.hi};
       else if (!cell.is_point())
         r.toi_cell = VolumeRootCell{cell.lo, cell.hi, cell.sign_at_lo};
