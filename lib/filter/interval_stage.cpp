@@ -461,7 +461,6 @@ StageResult coplanar_stage(const Polys& P, bool want_toi) {
   return r;
 }
 
-/// The stage on one query.
 /// Exact facts at t = 0 and t = 1 of a double query, for moving_stage. CGAL's static filters
 /// assume round-to-nearest: it is set for each call (this stage otherwise rounds upwards).
 template <class Query>
@@ -483,6 +482,7 @@ struct ExactEnds {
   }
 };
 
+/// The stage on one query.
 template <class IntervalQuery, class Query>
 StageResult interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi) {
   const auto P = contact::polynomials(q);
