@@ -1,4 +1,4 @@
-// filter::vertex_face_volume_sign / edge_edge_volume_sign (double-double, certified): every
+// filter::certified_volume_sign (double-double, certified): every
 // certified sign equals the exact sign of V(t) (GMP rationals), and the filter is decisive at
 // the doubles next to a root, which is what it is for (narrowing a TOI to adjacent doubles).
 #include <gmpxx.h>
@@ -39,8 +39,8 @@ struct Counts {
 };
 
 void check(const Rows& r, bool vertex_face, double t, Counts& counts, bool near_root) {
-  const int fast = vertex_face ? filter::vertex_face_volume_sign(from_rows<VertexFaceQuery>(r), t)
-                               : filter::edge_edge_volume_sign(from_rows<EdgeEdgeQuery>(r), t);
+  const int fast = vertex_face ? filter::certified_volume_sign(from_rows<VertexFaceQuery>(r), t)
+                               : filter::certified_volume_sign(from_rows<EdgeEdgeQuery>(r), t);
   const int exact = vertex_face ? exact_volume_sign(r, 1, 2, 3, 0, t) : exact_volume_sign(r, 0, 1, 2, 3, t);
   ++counts.checked;
   // Next to a root the filter is meant to decide, except where V(t) is exactly zero (never
@@ -92,23 +92,23 @@ TEST(VolumeSign, ExactZerosAndHugeCoordinatesAreLeftToTheExactPath) {
   // Coplanar for all t (z = 0 everywhere): V = 0 exactly, never certified as nonzero.
   Rows flat{};
   for (std::size_t k = 0; k < 8; ++k) flat[k] = {static_cast<double>(k % 3), static_cast<double>(k % 2), 0.0};
-  EXPECT_EQ(filter::vertex_face_volume_sign(from_rows<VertexFaceQuery>(flat), 0.5), contact::kUnknownSign);
-  EXPECT_EQ(filter::edge_edge_volume_sign(from_rows<EdgeEdgeQuery>(flat), 0.25), contact::kUnknownSign);
+  EXPECT_EQ(filter::certified_volume_sign(from_rows<VertexFaceQuery>(flat), 0.5), contact::kUnknownSign);
+  EXPECT_EQ(filter::certified_volume_sign(from_rows<EdgeEdgeQuery>(flat), 0.25), contact::kUnknownSign);
   // Beyond 2^300 the error analysis does not apply: unknown, whatever the sign.
   Rows huge = flat;
   huge[3] = {0, 0, 0x1p400};
   huge[7] = {0, 0, 0x1p400};
-  EXPECT_EQ(filter::vertex_face_volume_sign(from_rows<VertexFaceQuery>(huge), 0.5), contact::kUnknownSign);
+  EXPECT_EQ(filter::certified_volume_sign(from_rows<VertexFaceQuery>(huge), 0.5), contact::kUnknownSign);
   // A plain positive and negative volume.
   Rows unit{};
   unit[0] = unit[4] = {0.25, 0.25, 1};   // p above the triangle
   unit[1] = unit[5] = {0, 0, 0};
   unit[2] = unit[6] = {1, 0, 0};
   unit[3] = unit[7] = {0, 1, 0};
-  const int above = filter::vertex_face_volume_sign(from_rows<VertexFaceQuery>(unit), 0.5);
+  const int above = filter::certified_volume_sign(from_rows<VertexFaceQuery>(unit), 0.5);
   EXPECT_EQ(above, exact_volume_sign(unit, 1, 2, 3, 0, 0.5));
   unit[0].z = unit[4].z = -1;
-  EXPECT_EQ(filter::vertex_face_volume_sign(from_rows<VertexFaceQuery>(unit), 0.5), -above);
+  EXPECT_EQ(filter::certified_volume_sign(from_rows<VertexFaceQuery>(unit), 0.5), -above);
 }
 
 }  // namespace

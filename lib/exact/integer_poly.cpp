@@ -327,10 +327,6 @@ double approximate_root(const std::array<long double, 5>& c, int deg, double lo,
   return std::min(std::max(guess, lo), hi);
 }
 
-double approximate_root(const IntegerPoly& p, double lo, double hi, int sign_at_lo) {
-  return approximate_root(scaled_coefficients(p), p.deg, lo, hi, sign_at_lo);
-}
-
 namespace {
 
 /// -1, 0 or +1 as x compares to y.

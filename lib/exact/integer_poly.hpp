@@ -95,13 +95,10 @@ void refine_with_approximation(const IntegerPoly& p, IsolatedRoot& r);
 
 constexpr unsigned kRefinedCellBits = 56;  // long-double guesses of ill-conditioned roots err by ~2^-60
 
-/// A long-double approximation (a guess, to be checked exactly) of the only root of p in the
-/// open interval (lo, hi), where p's sign at lo is sign_at_lo and the opposite at hi;
-/// safeguarded Newton iteration. Returns a double in [lo, hi].
-double approximate_root(const IntegerPoly& p, double lo, double hi, int sign_at_lo);
-
-/// The same for the polynomial c[0] + c[1] t + ... + c[deg] t^deg given in long double (an
-/// approximation of the exact one: the guess is only a guess either way).
+/// A long-double approximation (a guess, to be checked exactly) of the only root in the open
+/// interval (lo, hi) of the polynomial c[0] + c[1] t + ... + c[deg] t^deg, whose sign at lo is
+/// sign_at_lo and the opposite at hi; safeguarded Newton iteration. Returns a double in
+/// [lo, hi].
 double approximate_root(const std::array<long double, 5>& c, int deg, double lo, double hi, int sign_at_lo);
 
 /// Halves the cell of a non-exact root once (exact sign of p at the midpoint); the root becomes

@@ -40,7 +40,7 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
   }
   if (is_static(q)) {  // contact does not depend on t: decided at t = 0, the TOI if it holds
     count(counters, &StageCounters::static_predicates);
-    if (!Kind::static_contact(q)) return std::nullopt;
+    if (!contact_at_end(q, 0)) return std::nullopt;
     return want_toi ? std::optional<TimeInterval>(TimeInterval{0.0, 0.0}) : kCollides;
   }
   const StageResult interval = Kind::interval_stage(q, want_toi);
@@ -50,7 +50,7 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
       return answer(interval);
     count(counters, &StageCounters::toi_refined);  // collision certain, TOI not yet
     if (interval.toi_cell)  // the TOI is V's simple root in this cell: narrow it exactly
-      if (auto toi = Kind::toi_in_cell(q, *interval.toi_cell)) return toi;
+      if (auto toi = toi_in_cell(q, *interval.toi_cell)) return toi;
   }
   const StageResult integer = Kind::integer_stage(q, want_toi);
   if (integer.verdict != Verdict::uncertain) {
@@ -65,15 +65,11 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
 
 struct VertexFace {
   static bool volume_excluded(const VertexFaceQuery& q) { return vertex_face_volume_excluded(q); }
-  static bool static_contact(const VertexFaceQuery& q) { return vertex_face_contact_at(q, 0); }
   static StageResult interval_stage(const VertexFaceQuery& q, bool want_toi) {
     return vertex_face_interval_stage(q, want_toi);
   }
   static StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) {
     return vertex_face_integer_stage(q, want_toi);
-  }
-  static std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& c) {
-    return vertex_face_toi_in_cell(q, c);
   }
   static bool exact_ccd(const RationalVertexFaceQuery& q) { return exact::vertex_face_ccd(q); }
   static std::optional<TimeInterval> exact_toi(const RationalVertexFaceQuery& q) {
@@ -83,15 +79,11 @@ struct VertexFace {
 
 struct EdgeEdge {
   static bool volume_excluded(const EdgeEdgeQuery& q) { return edge_edge_volume_excluded(q); }
-  static bool static_contact(const EdgeEdgeQuery& q) { return edge_edge_contact_at(q, 0); }
   static StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi) {
     return edge_edge_interval_stage(q, want_toi);
   }
   static StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) {
     return edge_edge_integer_stage(q, want_toi);
-  }
-  static std::optional<TimeInterval> toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& c) {
-    return edge_edge_toi_in_cell(q, c);
   }
   static bool exact_ccd(const RationalEdgeEdgeQuery& q) { return exact::edge_edge_ccd(q); }
   static std::optional<TimeInterval> exact_toi(const RationalEdgeEdgeQuery& q) {

@@ -358,8 +358,8 @@ TimeInterval tightest_enclosure(double guess, double lo, double hi, int sign_at_
   return {lo, hi};
 }
 
-template <class IntegerQuery, class Query, class FastSign>
-std::optional<TimeInterval> toi_in_cell(const Query& q, const VolumeRootCell& cell, FastSign&& fast_sign) {
+template <class IntegerQuery, class Query>
+std::optional<TimeInterval> narrow_toi_in_cell(const Query& q, const VolumeRootCell& cell) {
   if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
   // The guess from V in long double (built from the doubles; only a guess).
   using LongQuery = std::conditional_t<std::is_same_v<Query, VertexFaceQuery>, VertexFaceQueryT<long double>,
@@ -376,7 +376,7 @@ std::optional<TimeInterval> toi_in_cell(const Query& q, const VolumeRootCell& ce
   // Signs: double-double first (certified, usually decisive), exact V in GMP on demand.
   std::optional<IntegerPoly> v;
   const auto sign = [&](double t) {
-    if (const int s = fast_sign(q, t); s != contact::kUnknownSign) return s;
+    if (const int s = certified_volume_sign(q, t); s != contact::kUnknownSign) return s;
     if (!v) v = integer_poly(contact::polynomials(to_integer_query<IntegerQuery>(q)).volume());
     return exact::sign_at(*v, t);
   };
@@ -385,16 +385,12 @@ std::optional<TimeInterval> toi_in_cell(const Query& q, const VolumeRootCell& ce
 
 }  // namespace
 
-std::optional<TimeInterval> vertex_face_toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& cell) {
-  return toi_in_cell<VertexFaceQueryT<Integer>>(q, cell, [](const VertexFaceQuery& x, double t) {
-    return vertex_face_volume_sign(x, t);
-  });
+std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& cell) {
+  return narrow_toi_in_cell<VertexFaceQueryT<Integer>>(q, cell);
 }
 
-std::optional<TimeInterval> edge_edge_toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& cell) {
-  return toi_in_cell<EdgeEdgeQueryT<Integer>>(q, cell, [](const EdgeEdgeQuery& x, double t) {
-    return edge_edge_volume_sign(x, t);
-  });
+std::optional<TimeInterval> toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& cell) {
+  return narrow_toi_in_cell<EdgeEdgeQueryT<Integer>>(q, cell);
 }
 
 StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi) {

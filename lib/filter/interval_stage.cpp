@@ -397,6 +397,13 @@ StageResult factored_stage(const Polys& P, const IntervalQuery& q, bool want_toi
   return {};
 }
 
+/// The in-plane rule with every sign certified over all of [0, 1]: a certain answer holds at
+/// every t there (an exact [0, 0] value means the polynomial vanishes on [0, 1]).
+template <class Polys>
+contact::Truth rule_over_unit_interval(const Polys& P) {
+  return contact::in_plane_contact(P, IntervalSignOracle{Interval(0.0, 1.0)});
+}
+
 /// The stage when V vanishes identically (coplanar for all t): see the file comment, item 4.
 template <class Polys>
 StageResult coplanar_stage(const Polys& P, bool want_toi) {
@@ -405,7 +412,7 @@ StageResult coplanar_stage(const Polys& P, bool want_toi) {
   // t = 0: the TOI is exactly 0). This decides static and slowly moving coplanar pairs whose
   // rule hinges on one certain sign, even when another polynomial of the rule (never consulted
   // for the answer) is too close to zero for its roots to be isolated below.
-  switch (contact::in_plane_contact(P, IntervalSignOracle{Interval(0.0, 1.0)})) {
+  switch (rule_over_unit_interval(P)) {
     case contact::Truth::no:
       return {Verdict::no_collision, std::nullopt};
     case contact::Truth::yes:
@@ -468,17 +475,11 @@ struct ExactEnds {
   const Query& q;
   int volume_sign(int end) const {
     CGAL::Protect_FPU_rounding<true> to_nearest(CGAL_FE_TONEAREST);
-    if constexpr (std::is_same_v<Query, VertexFaceQuery>)
-      return vertex_face_volume_sign_at(q, end);
-    else
-      return edge_edge_volume_sign_at(q, end);
+    return volume_sign_at_end(q, end);
   }
   bool contact(int end) const {
     CGAL::Protect_FPU_rounding<true> to_nearest(CGAL_FE_TONEAREST);
-    if constexpr (std::is_same_v<Query, VertexFaceQuery>)
-      return vertex_face_contact_at(q, end);
-    else
-      return edge_edge_contact_at(q, end);
+    return contact_at_end(q, end);
   }
 };
 
@@ -488,14 +489,14 @@ StageResult interval_stage(const IntervalQuery& q, const Query& double_query, bo
   const auto P = contact::polynomials(q);
   if (exactly_zero(P.volume())) return coplanar_stage(P, want_toi);
   const StageResult moving = moving_stage(P, ExactEnds<Query>{double_query}, want_toi);
-  const bool toi_missing = want_toi && moving.verdict == Verdict::collision && !moving.toi;
+  // A collision whose TOI cell was handed over (toi_cell) needs nothing more here.
+  const bool toi_missing = want_toi && moving.verdict == Verdict::collision && !moving.toi && !moving.toi_cell;
   if (moving.verdict != Verdict::uncertain && !toi_missing) return moving;
   // Contact needs V(t) = 0 and the in-plane rule at the same t: a rule certainly false at every
   // t of [0, 1] (its deciding sign certified over the whole interval) excludes contact wherever
   // V's roots are. Decides nearly coplanar motion (resting contact, V within rounding of 0 for
   // all t, roots not isolable) when the point stays clearly outside the triangle's edge.
-  if (moving.verdict == Verdict::uncertain &&
-      contact::in_plane_contact(P, IntervalSignOracle{Interval(0.0, 1.0)}) == contact::Truth::no)
+  if (moving.verdict == Verdict::uncertain && rule_over_unit_interval(P) == contact::Truth::no)
     return {Verdict::no_collision, std::nullopt};
   // Uncertain, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
   // a root it shares with a factor's): the factored view may decide or narrow on the factor.

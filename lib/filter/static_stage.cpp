@@ -51,7 +51,7 @@ bool is_static(const EdgeEdgeQuery& q) {
          same(q.b1_t0, q.b1_t1);
 }
 
-bool vertex_face_contact_at(const VertexFaceQuery& q, int end) {
+bool contact_at_end(const VertexFaceQuery& q, int end) {
   const Point p = point(end ? q.p_t1 : q.p_t0), a = point(end ? q.a_t1 : q.a_t0),
               b = point(end ? q.b_t1 : q.b_t0), c = point(end ? q.c_t1 : q.c_t0);
   if (CGAL::orientation(a, b, c, p) != CGAL::COPLANAR) return false;
@@ -67,7 +67,7 @@ bool vertex_face_contact_at(const VertexFaceQuery& q, int end) {
   return on_segment(p, a, b) || on_segment(p, b, c) || on_segment(p, c, a);
 }
 
-bool edge_edge_contact_at(const EdgeEdgeQuery& q, int end) {
+bool contact_at_end(const EdgeEdgeQuery& q, int end) {
   const Point p0 = point(end ? q.a0_t1 : q.a0_t0), p1 = point(end ? q.a1_t1 : q.a1_t0),
               q0 = point(end ? q.b0_t1 : q.b0_t0), q1 = point(end ? q.b1_t1 : q.b1_t0);
   const bool a_point = p0 == p1, b_point = q0 == q1;
@@ -80,12 +80,12 @@ bool edge_edge_contact_at(const EdgeEdgeQuery& q, int end) {
 // CGAL's orientation(p, q, r, s) is the sign of det[q - p, r - p, s - p], and
 // det[u, v, w] = u . (v x w): V = (b - a) . ((c - a) x (p - a)) = det[b - a, c - a, p - a] is
 // orientation(a, b, c, p); V = (a1 - a0) . ((b0 - a0) x (b1 - a0)) is orientation(a0, a1, b0, b1).
-int vertex_face_volume_sign_at(const VertexFaceQuery& q, int end) {
+int volume_sign_at_end(const VertexFaceQuery& q, int end) {
   return static_cast<int>(CGAL::orientation(point(end ? q.a_t1 : q.a_t0), point(end ? q.b_t1 : q.b_t0),
                                             point(end ? q.c_t1 : q.c_t0), point(end ? q.p_t1 : q.p_t0)));
 }
 
-int edge_edge_volume_sign_at(const EdgeEdgeQuery& q, int end) {
+int volume_sign_at_end(const EdgeEdgeQuery& q, int end) {
   return static_cast<int>(CGAL::orientation(point(end ? q.a0_t1 : q.a0_t0), point(end ? q.a1_t1 : q.a1_t0),
                                             point(end ? q.b0_t1 : q.b0_t0), point(end ? q.b1_t1 : q.b1_t0)));
 }

@@ -21,18 +21,20 @@ bool is_static(const EdgeEdgeQuery& q);
 
 /// Exact vertex-face contact at t = `end` (0 or 1): p in the closed convex hull of a, b, c then
 /// (a degenerate triangle is the segment or point it spans). For a static query, the answer.
-bool vertex_face_contact_at(const VertexFaceQuery& q, int end);
+bool contact_at_end(const VertexFaceQuery& q, int end);
 
 /// Exact edge-edge contact at t = `end` (0 or 1): the closed segments share a point then (a
 /// zero-length edge is a point). For a static query, the answer.
-bool edge_edge_contact_at(const EdgeEdgeQuery& q, int end);
+bool contact_at_end(const EdgeEdgeQuery& q, int end);
 
 /// The exact sign (-1, 0, 1) of the volume V at t = `end` (0 or 1), V as in
 /// contact_polynomials.hpp: the orientation of a, b, c, p then.
-int vertex_face_volume_sign_at(const VertexFaceQuery& q, int end);
+int volume_sign_at_end(const VertexFaceQuery& q, int end);
 
 /// The exact sign (-1, 0, 1) of the volume V at t = `end` (0 or 1): the orientation of a0, a1,
 /// b0, b1 then.
-int edge_edge_volume_sign_at(const EdgeEdgeQuery& q, int end);
+int volume_sign_at_end(const EdgeEdgeQuery& q, int end);
+
+// All four call CGAL's static filters, which assume round-to-nearest.
 
 }  // namespace exactccd::filter

@@ -135,9 +135,9 @@ int volume_sign(const Rows& r, int o, int a, int b, int c, double t) {
 }  // namespace
 
 // V = (b - a) . ((c - a) x (p - a)): rows p = 0, a = 1, b = 2, c = 3.
-int vertex_face_volume_sign(const VertexFaceQuery& q, double t) { return volume_sign(rows(q), 1, 2, 3, 0, t); }
+int certified_volume_sign(const VertexFaceQuery& q, double t) { return volume_sign(rows(q), 1, 2, 3, 0, t); }
 
 // V = (a1 - a0) . ((b0 - a0) x (b1 - a0)): rows a0 = 0, a1 = 1, b0 = 2, b1 = 3.
-int edge_edge_volume_sign(const EdgeEdgeQuery& q, double t) { return volume_sign(rows(q), 0, 1, 2, 3, t); }
+int certified_volume_sign(const EdgeEdgeQuery& q, double t) { return volume_sign(rows(q), 0, 1, 2, 3, t); }
 
 }  // namespace exactccd::filter

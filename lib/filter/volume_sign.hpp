@@ -15,9 +15,9 @@ namespace exactccd::filter {
 /// The certified sign (-1, 0, +1) of V(t) (V as in contact_polynomials.hpp) for a double t in
 /// [0, 1], or contact::kUnknownSign (2) when double-double precision cannot certify it (also
 /// for coordinates beyond 2^300 in magnitude, and always when V(t) = 0).
-int vertex_face_volume_sign(const VertexFaceQuery& q, double t);
+int certified_volume_sign(const VertexFaceQuery& q, double t);
 
-/// See vertex_face_volume_sign.
-int edge_edge_volume_sign(const EdgeEdgeQuery& q, double t);
+/// See certified_volume_sign(const VertexFaceQuery&, double).
+int certified_volume_sign(const EdgeEdgeQuery& q, double t);
 
 }  // namespace exactccd::filter
