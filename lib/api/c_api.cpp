@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "exactccd/ccd.hpp"
+#include "filter/fp_environment.hpp"
 
 namespace {
 
@@ -26,6 +27,7 @@ std::optional<Query> read_query(const double* q) {
 template <class Query, class Toi>
 exactccd_status toi_impl(const double* query, int* collides, double* lo, double* hi, Toi&& toi) {
   if (!query || !collides) return EXACTCCD_ERROR_NULL;
+  const filter::DefaultFpEnvironment fp_environment;  // as every C++ entry point
   const std::optional<Query> q = read_query<Query>(query);
   if (!q) return EXACTCCD_ERROR_NON_FINITE;
   try {

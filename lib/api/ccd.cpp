@@ -9,6 +9,7 @@
 #include "exact/exact_ccd.hpp"
 #include "exact/rational_query.hpp"
 #include "filter/filtered_ccd.hpp"
+#include "filter/fp_environment.hpp"
 
 namespace exactccd {
 namespace {
@@ -74,6 +75,7 @@ std::optional<TimeInterval> collides(bool c) { return c ? std::optional(TimeInte
 /// One query by one method: the TOI when want_toi, else a placeholder interval on collision.
 template <class Query>
 std::optional<TimeInterval> answer(const Query& q, Method method, bool want_toi, StageCounters* counters) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   require_finite(q, function_name(q, want_toi));
   switch (method) {
     case Method::filtered:
@@ -100,8 +102,14 @@ bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method, StageCounters& counter
   return answer(q, method, false, &counters).has_value();
 }
 
-bool vertex_face_ccd(const RationalVertexFaceQuery& q) { return exact::vertex_face_ccd(q); }
-bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) { return exact::edge_edge_ccd(q); }
+bool vertex_face_ccd(const RationalVertexFaceQuery& q) {
+  const filter::DefaultFpEnvironment fp_environment;  // CGAL's kernel filters with intervals
+  return exact::vertex_face_ccd(q);
+}
+bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) {
+  const filter::DefaultFpEnvironment fp_environment;
+  return exact::edge_edge_ccd(q);
+}
 
 std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, Method method) {
   return answer(q, method, true, nullptr);
@@ -119,9 +127,11 @@ std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method,
 }
 
 std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
+  const filter::DefaultFpEnvironment fp_environment;
   return exact::vertex_face_toi(q);
 }
 std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) {
+  const filter::DefaultFpEnvironment fp_environment;
   return exact::edge_edge_toi(q);
 }
 

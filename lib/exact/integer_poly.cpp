@@ -71,42 +71,67 @@ Coefficients bernstein_coefficients(const Coefficients& c, int d) {
   return b;
 }
 
-/// Bernstein subdivision of the cell [a / 2^k, (a + 1) / 2^k] with scaled Bernstein
-/// coefficients b (all positive multiples of the true ones). False when a cell deeper than
-/// max_depth is still undecided (a multiple root, or roots closer than 2^-max_depth).
-bool isolate(const IntegerPoly& p, const Coefficients& b, const mpz_class& a, unsigned k,
-             unsigned max_depth, std::vector<IsolatedRoot>& out) {
+/// Bernstein subdivision of [0, 1] with scaled Bernstein coefficients b (positive multiples of
+/// the true ones), appending the roots in the open interval (0, 1) in increasing order. False
+/// when a cell deeper than max_depth is still undecided (a multiple root, or roots closer than
+/// 2^-max_depth).
+///
+/// Depth-first with an explicit stack, not recursion: the depth is the number of bits that
+/// separate two roots, which for inputs mixing magnitudes 2^-1074 and 2^1000 reaches thousands
+/// (a recursive version needed ~2 MB of stack for one such edge-edge query). The stack holds at
+/// most one pending right half per level, so its memory is linear in the depth, on the heap.
+bool isolate(const IntegerPoly& p, const Coefficients& b, unsigned max_depth, std::vector<IsolatedRoot>& out) {
   const int d = p.deg;
-  const int changes = sign_variations(b, d);
-  if (changes == 0) return true;
-  if (changes == 1 && sgn(b[0]) != 0 && sgn(b[d]) != 0) {
-    IsolatedRoot r;
-    r.lo = {a, k};
-    r.hi = {a + 1, k};
-    r.sign_at_lo = sgn(b[0]);
-    out.push_back(std::move(r));
-    return true;
+  struct Cell {
+    Coefficients b;             // scaled Bernstein coefficients on [a / 2^k, (a + 1) / 2^k]
+    mpz_class a;
+    unsigned k = 0;
+    bool midpoint_root = false;  // not a cell: the exact root a / 2^k, emitted in order
+  };
+  std::vector<Cell> pending;
+  pending.push_back(Cell{b, 0, 0, false});
+  while (!pending.empty()) {
+    Cell cell = std::move(pending.back());
+    pending.pop_back();
+    if (cell.midpoint_root) {
+      IsolatedRoot r;
+      r.exact = true;
+      r.at = {std::move(cell.a), cell.k};
+      out.push_back(std::move(r));
+      continue;
+    }
+    const int changes = sign_variations(cell.b, d);
+    if (changes == 0) continue;
+    if (changes == 1 && sgn(cell.b[0]) != 0 && sgn(cell.b[d]) != 0) {
+      IsolatedRoot r;
+      r.lo = {cell.a, cell.k};
+      r.hi = {cell.a + 1, cell.k};
+      r.sign_at_lo = sgn(cell.b[0]);
+      out.push_back(std::move(r));
+      continue;
+    }
+    if (cell.k >= max_depth) return false;
+    // de Casteljau at the midpoint, both halves scaled by 2^d to stay integral:
+    //   left_j = 2^(d-j) sum_{i<=j} C(j,i) b_i,  right_j = 2^j sum_{i>=j} C(d-j,i-j) b_i.
+    Cell left, right;
+    for (int j = 0; j <= d; ++j) {
+      mpz_class l = 0, r = 0;
+      for (int i = 0; i <= j; ++i) l += kBinomial[j][i] * cell.b[i];
+      for (int i = j; i <= d; ++i) r += kBinomial[d - j][i - j] * cell.b[i];
+      left.b[j] = shifted(l, static_cast<unsigned long>(d - j));
+      right.b[j] = shifted(r, static_cast<unsigned long>(j));
+    }
+    const mpz_class a2 = 2 * cell.a;
+    left.a = a2;
+    right.a = a2 + 1;
+    left.k = right.k = cell.k + 1;
+    // Processed in the order left cell, midpoint (when it is a root), right cell.
+    const bool midpoint_is_root = sgn(left.b[d]) == 0;
+    pending.push_back(std::move(right));
+    if (midpoint_is_root) pending.push_back(Cell{{}, a2 + 1, cell.k + 1, true});
+    pending.push_back(std::move(left));
   }
-  if (k >= max_depth) return false;
-  // de Casteljau at the midpoint, both halves scaled by 2^d to stay integral:
-  //   left_j = 2^(d-j) sum_{i<=j} C(j,i) b_i,  right_j = 2^j sum_{i>=j} C(d-j,i-j) b_i.
-  Coefficients left, right;
-  for (int j = 0; j <= d; ++j) {
-    mpz_class l = 0, r = 0;
-    for (int i = 0; i <= j; ++i) l += kBinomial[j][i] * b[i];
-    for (int i = j; i <= d; ++i) r += kBinomial[d - j][i - j] * b[i];
-    left[j] = shifted(l, static_cast<unsigned long>(d - j));
-    right[j] = shifted(r, static_cast<unsigned long>(j));
-  }
-  const mpz_class a2 = 2 * a;
-  if (!isolate(p, left, a2, k + 1, max_depth, out)) return false;
-  if (sgn(left[d]) == 0) {  // the midpoint is a root
-    IsolatedRoot r;
-    r.exact = true;
-    r.at = {a2 + 1, k + 1};
-    out.push_back(std::move(r));
-  }
-  return isolate(p, right, a2 + 1, k + 1, max_depth, out);
+  return true;
 }
 
 }  // namespace
@@ -211,7 +236,7 @@ std::optional<std::vector<IsolatedRoot>> roots_in_unit_interval(const IntegerPol
     r.at = {0, 0};
     roots.push_back(std::move(r));
   }
-  if (!isolate(p, bernstein_coefficients(p.c, d), 0, 0, max_depth, roots)) return std::nullopt;
+  if (!isolate(p, bernstein_coefficients(p.c, d), max_depth, roots)) return std::nullopt;
   if (sgn(at_1) == 0) {
     IsolatedRoot r;
     r.exact = true;

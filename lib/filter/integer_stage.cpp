@@ -164,15 +164,24 @@ DualEdgeEdge dual_polys(const contact::EdgeEdgePolys<Interval>& I, const contact
   return {I, Z};
 }
 
-/// A double interval holding the dyadic cell [lo, hi] (computed with integer arithmetic: no
-/// dependence on the rounding mode).
+/// A double interval holding the dyadic cell [lo, hi] (0 <= lo <= hi <= 1), computed with
+/// integer arithmetic and exact scalings only: no dependence on the rounding mode. With
+/// mpz_get_d_2exp's mantissa m (truncated, in [0.5, 1), at most 53 bits) and exponent x,
+/// d >= m 2^x and d < 2^x. While m 2^x is a normal double (x >= -1021) ldexp is exact; below
+/// that it could round (in either direction), so the bounds are 0 and 2^-1021 instead, which
+/// hold d as well (a cell that close to t = 0 only costs interval precision).
 std::pair<double, double> enclosing_doubles(const Dyadic& lo, const Dyadic& hi) {
-  const auto down = [](const Dyadic& d) {  // d >= 0, rounded towards zero
+  const auto split = [](const Dyadic& d, long& x) {
     long e = 0;
-    const double m = mpz_get_d_2exp(&e, d.a.get_mpz_t());  // truncated mantissa in [0.5, 1)
-    return std::ldexp(m, static_cast<int>(std::max(e - static_cast<long>(d.k), -2000L)));
+    const double m = mpz_get_d_2exp(&e, d.a.get_mpz_t());  // truncated mantissa in [0.5, 1), or 0
+    x = e - static_cast<long>(d.k);
+    return m;
   };
-  return {down(lo), std::nextafter(down(hi), 2.0)};
+  long x_lo = 0, x_hi = 0;
+  const double m_lo = split(lo, x_lo), m_hi = split(hi, x_hi);
+  const double below = m_lo == 0 || x_lo < -1021 ? 0.0 : std::ldexp(m_lo, static_cast<int>(x_lo));
+  const double above = m_hi == 0 ? 0.0 : x_hi < -1021 ? 0x1p-1021 : std::nextafter(std::ldexp(m_hi, static_cast<int>(x_hi)), 2.0);
+  return {below, above};
 }
 
 /// Exact sign oracle at a candidate; tries the interval polynomial over the candidate's cell

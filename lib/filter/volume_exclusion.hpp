@@ -11,9 +11,9 @@
 // non-negative terms, at least one positive for each t); likewise for < 0.
 //
 // Error bound (Shewchuk 1997, "Adaptive precision floating-point arithmetic and fast robust
-// geometric predicates", orient3d). Each D_ijk is a 3x3 determinant whose entries are single
-// rounded differences of input doubles, evaluated as in Shewchuk's orient3dfast; with
-// eps = 2^-53 and P~ its permanent computed in floating point,
+// geometric predicates", orient3d), valid under the range condition below. Each D_ijk is a
+// 3x3 determinant whose entries are single rounded differences of input doubles, evaluated as
+// in Shewchuk's orient3dfast; with eps = 2^-53 and P~ its permanent computed in floating point,
 //     |D~ - D| <= (7 + 56 eps) eps P~                                     (Shewchuk, o3derrboundA)
 // and |D~| <= (1 + 4 eps) P~ (each |term| is rounded at most 3 times more than in P~).
 // A group sum S~ = fl(fl(D~1 + D~2) + D~3) adds two roundings, each at most eps times the
@@ -24,12 +24,30 @@
 //     |S~ - S| <= (9 eps + 70 eps^2) / (1 - eps)^2 Q~ <= (9 eps + 90 eps^2) Q~,
 // and the threshold tau = fl(10 eps * Q~) >= (10 eps - 10 eps^2) Q~ exceeds that bound. Hence
 // S~ > tau implies S > 0 and S~ < -tau implies S < 0.
-// Underflow: the relative bounds above hold without underflow; each of the fewer than 64
-// rounded operations of a group may add an absolute error of at most 2^-1075 when its result
-// is subnormal. Demanding Q~ >= 2^-900 leaves a slack of at least
-// (10 eps - 10 eps^2 - 9 eps - 90 eps^2) Q~ > 2^-54 * 2^-900 > 64 * 2^-1075, which absorbs it.
-// Overflow: an overflowing difference or product makes Q~ infinite or NaN, and then neither
-// S~ > tau nor S~ < -tau holds: the filter does not decide, and a later stage does.
+//
+// Range condition (underflow and overflow). The bounds above use the model
+// fl(a op b) = (a op b)(1 + delta), |delta| <= eps, for every operation. With gradual underflow
+// (round to nearest, no flush-to-zero) a sum or difference obeys it always (a subnormal sum is
+// exact), but a product whose exact value is below 2^-1022 in magnitude may err by 2^-1075
+// absolutely, and a later product multiplies that error by an entry: an absolute term added
+// per operation is NOT a valid bound (2^-1075 times an entry 2^200 is 2^-875). So the stage
+// decides only when no product can underflow or overflow: every entry e (a rounded difference,
+// computed exactly or with relative error only) is 0 or 2^-300 <= |e| <= 2^300. Then
+// - a product of two entries is 0 or in [2^-600, 2^600] (normal, relative error only);
+// - such a product is a double of exponent >= -600, a multiple of 2^-652, so a difference of
+//   two of them is 0 or in [2^-652, 2^601];
+// - its product with a third entry is 0 or in [2^-952, 2^902] (normal);
+// - sums of at most nine such terms stay below 2^906: no overflow anywhere, and sums never
+//   underflow (see above);
+// - the permanents have the same products; Q~ is 0 or at least 2^-952, so tau = fl(10 eps Q~)
+//   is 0 or at least 2^-1006 (normal: relative rounding only; 10 eps is exact). Q~ = 0 gives
+//   S~ = 0 and no decision.
+// Outside the range (a wide exponent spread, tiny or huge scenes) the stage passes; the
+// filtered method retries it on the query scaled by a power of two towards 1 and otherwise
+// leaves the query to the later stages, which are sound for every finite input. NaN entries
+// (inf - inf) fail the range test too. All of this assumes round-to-nearest without
+// flush-to-zero or denormals-are-zero: the public entry points establish that environment
+// (fp_environment.hpp).
 #pragma once
 
 #include <cmath>
@@ -56,21 +74,34 @@ inline RoundedDeterminant rounded_determinant(const Vec3& u, const Vec3& v, cons
 }
 
 /// Certified sign of a sum of up to three rounded determinants: +1 or -1 when certain, 0 when
-/// the filter cannot tell (see the bound above).
+/// the filter cannot tell (see the bound above; entries must satisfy the range condition).
 inline int certified_group_sign(double sum, double permanent_sum) {
   constexpr double kEps = 0x1p-53;
-  constexpr double kMinPermanent = 0x1p-900;  // underflow guard, see above
   const double tau = (10 * kEps) * permanent_sum;
-  if (!(permanent_sum >= kMinPermanent)) return 0;  // also catches NaN
   if (sum > tau) return 1;
   if (sum < -tau) return -1;
-  return 0;
+  return 0;  // also for Q~ = 0
+}
+
+/// The range condition above: e is 0 or 2^-300 <= |e| <= 2^300 (false for NaN). Written with
+/// non-short-circuit operators so that the 18 tests of a query vectorise.
+inline bool in_filter_range(double e) {
+  const double a = std::fabs(e);
+  return (a <= 0x1p300) & ((a >= 0x1p-300) | (a == 0));
+}
+
+inline bool in_filter_range(const Vec3& v) {
+  return in_filter_range(v.x) & in_filter_range(v.y) & in_filter_range(v.z);
 }
 
 /// Certified "V(t) != 0 for every t in [0, 1]" for the volume det[u(t), v(t), w(t)], rows given
-/// at t = 0 and t = 1 as rounded differences of the input points. False means "not proven".
+/// at t = 0 and t = 1 as rounded differences of the input points. False means "not proven"
+/// (also whenever an entry is outside the range where the error bound is valid).
 inline bool volume_certainly_nonzero(const Vec3& u0, const Vec3& u1, const Vec3& v0,
                                      const Vec3& v1, const Vec3& w0, const Vec3& w1) {
+  if (!(in_filter_range(u0) & in_filter_range(u1) & in_filter_range(v0) & in_filter_range(v1) &
+        in_filter_range(w0) & in_filter_range(w1)))
+    return false;
   const RoundedDeterminant d000 = rounded_determinant(u0, v0, w0);
   const int s0 = certified_group_sign(d000.value, d000.permanent);
   if (s0 == 0) return false;

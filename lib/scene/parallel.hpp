@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "filter/fp_environment.hpp"
+
 namespace exactccd::scene {
 
 /// The number of threads to use for `requested` (0: every hardware thread), at least 1.
@@ -36,6 +38,9 @@ unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Bod
   std::exception_ptr failure;
   std::mutex failure_mutex;
   const auto work = [&](unsigned worker) {
+    // A new thread inherits its creator's floating-point environment: establish the default
+    // one in every worker (a no-op on the calling thread, whose entry point already did).
+    const filter::DefaultFpEnvironment fp_environment;
     try {
       for (std::size_t c; !stop.load(std::memory_order_relaxed) && (c = next.fetch_add(1)) < chunks;) {
         const std::size_t begin = c * chunk, end = std::min(n, begin + chunk);

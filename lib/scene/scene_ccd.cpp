@@ -8,6 +8,7 @@
 
 #include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"
+#include "filter/fp_environment.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene/time_bounds.hpp"
@@ -105,6 +106,7 @@ auto key(const Collision& c) {
 }  // namespace
 
 std::vector<Collision> find_collisions(const Scene& scene, const SceneOptions& options) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const ScenePrimitives prim = scene::scene_primitives(scene);
   const CandidateRange range{scene, prim};
   const unsigned threads = scene::resolve_threads(options.threads);
@@ -121,6 +123,7 @@ std::vector<Collision> find_collisions(const Scene& scene, const SceneOptions& o
 }
 
 std::optional<TimeInterval> earliest_toi(const std::vector<Collision>& collisions) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   std::optional<TimeInterval> best;
   for (const Collision& c : collisions)
     if (!best || earlier(c.toi, *best)) best = c.toi;
@@ -128,6 +131,7 @@ std::optional<TimeInterval> earliest_toi(const std::vector<Collision>& collision
 }
 
 std::optional<TimeInterval> earliest_toi(const Scene& scene, const SceneOptions& options) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const ScenePrimitives prim = scene::scene_primitives(scene);
   const CandidateRange range{scene, prim};
   const unsigned threads = scene::resolve_threads(options.threads);
@@ -163,6 +167,7 @@ std::optional<TimeInterval> earliest_toi(const Scene& scene, const SceneOptions&
 }
 
 bool is_collision_free(const Scene& scene, const SceneOptions& options) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const ScenePrimitives prim = scene::scene_primitives(scene);
   const CandidateRange range{scene, prim};
   std::atomic<bool> hit{false};
@@ -176,6 +181,7 @@ bool is_collision_free(const Scene& scene, const SceneOptions& options) {
 }
 
 double max_collision_free_step(const std::optional<TimeInterval>& earliest) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   if (!earliest) return 1.0;
   // Every contact time t >= lo; the largest double s < lo gives [0, s] without contact.
   if (earliest->lo <= 0) return 0.0;
@@ -183,6 +189,7 @@ double max_collision_free_step(const std::optional<TimeInterval>& earliest) {
 }
 
 double max_collision_free_step(const Scene& scene, const SceneOptions& options) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   return max_collision_free_step(earliest_toi(scene, options));
 }
 

@@ -1,0 +1,84 @@
+// The floating-point environment every filter of exactccd is proved in, established at each
+// public entry point whatever the caller's thread has set, and restored on the way out.
+//
+// The error bounds of the filters (docs/design.md, 5 and 8) assume IEEE 754 binary64 with
+// round-to-nearest-even and gradual underflow: Shewchuk-style static bounds, TwoSum and the
+// double-double algorithms are unsound under directed rounding, and flush-to-zero /
+// denormals-are-zero (set for the whole process by programs linked with -ffast-math) break
+// every argument about subnormals (CGAL's Interval_nt included: a tiny positive product whose
+// upward-rounded bound is flushed to +0 is no longer enclosed, and an exact [0, 0] no longer
+// proves a zero).
+// Unmasked exceptions would turn the filters' intended overflows into traps.
+//
+// The guard costs one read of the control registers when the caller is already in the default
+// environment (the common case: nothing is written, so nothing is restored); otherwise it saves
+// the whole environment (fegetenv), installs the default one (FE_DFL_ENV: round to nearest, all
+// exceptions masked, no FTZ/DAZ) and restores the saved one on destruction, also when an
+// exception leaves the scope. Status flags (inexact, underflow, ...) raised while the caller's
+// environment was the default one are left raised, as by any floating-point computation.
+#pragma once
+
+#include <cfenv>
+
+#if defined(__x86_64__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
+
+namespace exactccd::filter {
+
+/// True iff the calling thread's floating-point control state is the IEEE default the filters
+/// are proved in: round to nearest, every exception masked, and (where the hardware has them)
+/// no flush-to-zero or denormals-are-zero.
+inline bool is_default_fp_environment() noexcept {
+#if defined(__x86_64__) || defined(_M_X64)
+  // MXCSR: bits 0-5 are status flags (ignored); DAZ (6), the six exception masks (7-12),
+  // rounding control (13-14) and FTZ (15) must read 0, 111111, 00, 0: 0x1F80.
+  const unsigned mxcsr = _mm_getcsr();
+  if ((mxcsr & 0xFFC0u) != 0x1F80u) return false;
+#if defined(__GNUC__)
+  // x87 control word (long double arithmetic: the Newton guesses): exception masks (0-5) set,
+  // precision control (8-9) extended, rounding control (10-11) to nearest: 0x037F in the bits
+  // 0x0F3F.
+  unsigned short x87 = 0;
+  __asm__ volatile("fnstcw %0" : "=m"(x87));
+  if ((x87 & 0x0F3Fu) != 0x033Fu) return false;
+#endif
+  return true;
+#elif defined(__aarch64__) && defined(__GNUC__)
+  // FPCR: rounding mode (22-23), FZ (24), FZ16 (19), and the trap enables (8-12, 15) must be 0.
+  const unsigned long fpcr = __builtin_aarch64_get_fpcr();
+  return (fpcr & ((3ul << 22) | (1ul << 24) | (1ul << 19) | 0x9F00ul)) == 0;
+#else
+  // Portable fallback: only the rounding direction can be read; flush-to-zero is invisible to
+  // standard C++ (documented as a platform limitation in the README).
+  return std::fegetround() == FE_TONEAREST;
+#endif
+}
+
+/// RAII: installs the default floating-point environment for the calling thread for the
+/// guard's lifetime when it is not already in place, and restores the caller's one on
+/// destruction. Not copyable; one per scope, nestable (an inner guard finds the default
+/// environment and does nothing).
+class DefaultFpEnvironment {
+ public:
+  DefaultFpEnvironment() noexcept : changed_(!is_default_fp_environment()) {
+    if (changed_) {
+      std::fegetenv(&saved_);
+      std::fesetenv(FE_DFL_ENV);
+    }
+  }
+  ~DefaultFpEnvironment() {
+    if (changed_) std::fesetenv(&saved_);
+  }
+  DefaultFpEnvironment(const DefaultFpEnvironment&) = delete;
+  DefaultFpEnvironment& operator=(const DefaultFpEnvironment&) = delete;
+
+  /// Whether the caller's environment differed from the default (and is restored at the end).
+  bool changed() const noexcept { return changed_; }
+
+ private:
+  std::fenv_t saved_{};
+  bool changed_;
+};
+
+}  // namespace exactccd::filter
