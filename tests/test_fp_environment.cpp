@@ -1,0 +1,528 @@
+// Every public entry point gives the same answers and TOIs whatever floating-point environment
+// the calling thread is in (directed rounding, flush-to-zero and denormals-are-zero, unmasked
+// exceptions), and leaves that environment as it found it, also when it throws (design.md, 8).
+//
+// The references are computed once under the default environment; each environment then
+// re-answers every query of the shared sample and of the bundled data through every entry point
+// (C++ with and without counters, every exact method and the naive baseline, rational queries,
+// the C API, the Eigen overloads) and every scene function on the bundled scenes. After every
+// call the control state (MXCSR control bits, x87 control word, fegetround) must be the one the
+// test installed. A fault-injection test throws std::bad_alloc from every allocation a query
+// makes in turn, and checks the caller's environment after each throw.
+#include <gtest/gtest.h>
+
+#include <cfenv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "exactccd/eigen.hpp"
+#include "exactccd/exactccd.h"
+#include "exactccd/exactccd.hpp"
+#include "filter/fp_environment.hpp"
+#include "io/benchmark_csv.hpp"
+#include "io/obj.hpp"
+
+#if defined(__x86_64__) || defined(_M_X64)
+#include <xmmintrin.h>
+#define EXACTCCD_TEST_X86_64 1
+#endif
+
+// ---- fault injection: operator new throws on the n-th allocation of this thread when armed ----
+namespace {
+thread_local long allocations_until_failure = -1;  // -1: disarmed
+thread_local int rounding_at_failure = -1;          // fegetround() when it threw
+}  // namespace
+
+// GCC takes the replaced operator delete's free() for a mismatch with operator new (it is the
+// matching pair here: both replaced, malloc and free).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#endif
+void* operator new(std::size_t size) {
+  if (allocations_until_failure >= 0 && allocations_until_failure-- == 0) {
+    rounding_at_failure = std::fegetround();
+    throw std::bad_alloc();
+  }
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) { return operator new(size); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace exactccd {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---- environments -------------------------------------------------------------------------
+
+struct Environment {
+  const char* name;
+  int rounding;    ///< FE_TONEAREST, FE_UPWARD, ...
+  bool ftz_daz;    ///< flush-to-zero and denormals-are-zero (what -ffast-math programs set)
+  bool traps;      ///< invalid, division by zero and overflow unmasked (SIGFPE on each)
+};
+
+const Environment kEnvironments[] = {
+    {"upward", FE_UPWARD, false, false},
+    {"downward", FE_DOWNWARD, false, false},
+    {"towardzero", FE_TOWARDZERO, false, false},
+    {"ftz_daz", FE_TONEAREST, true, false},
+    {"ftz_daz_upward", FE_UPWARD, true, false},
+    {"traps", FE_TONEAREST, false, true},
+};
+
+/// The control state of the calling thread (status flags excluded).
+struct ControlState {
+  unsigned mxcsr = 0;
+  unsigned x87 = 0;
+  int rounding = 0;
+  bool operator==(const ControlState& o) const {
+    return mxcsr == o.mxcsr && x87 == o.x87 && rounding == o.rounding;
+  }
+};
+
+ControlState control_state() {
+  ControlState s;
+#ifdef EXACTCCD_TEST_X86_64
+  s.mxcsr = _mm_getcsr() & 0xFFC0u;
+  unsigned short cw = 0;
+  __asm__ volatile("fnstcw %0" : "=m"(cw));
+  s.x87 = cw;
+#endif
+  s.rounding = std::fegetround();
+  return s;
+}
+
+std::string describe(const ControlState& s) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "mxcsr control 0x%x, x87 0x%x, fegetround %d", s.mxcsr, s.x87, s.rounding);
+  return buf;
+}
+
+/// Whether the platform lets the test install the environment.
+bool supported(const Environment& e) {
+#ifdef EXACTCCD_TEST_X86_64
+  (void)e;
+  return true;
+#else
+  return !e.ftz_daz && !e.traps;
+#endif
+}
+
+/// Installs e on the calling thread (from the default environment).
+void install(const Environment& e) {
+  std::fesetenv(FE_DFL_ENV);
+  std::fesetround(e.rounding);
+#ifdef EXACTCCD_TEST_X86_64
+  if (e.ftz_daz) _mm_setcsr(_mm_getcsr() | 0x8040u);  // FTZ (bit 15), DAZ (bit 6)
+  if (e.traps) feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+#endif
+}
+
+/// Back to the default environment at the end of a scope (also when an assertion returns).
+struct RestoreDefault {
+  ~RestoreDefault() { std::fesetenv(FE_DFL_ENV); }
+};
+
+// ---- the data -----------------------------------------------------------------------------
+
+struct Query {
+  std::string where;  ///< file and index, for messages
+  bool vertex_face;
+  std::array<RationalVec3, 8> rational;
+  std::optional<std::array<Vec3, 8>> doubles;  ///< when every coordinate is a double
+};
+
+void load_csv(const fs::path& path, std::vector<Query>& out) {
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << path;
+  const io::BenchmarkQueries q = io::read_benchmark_csv(in, path.string());
+  const bool vf = path.string().rfind("vertex-face") != std::string::npos;
+  for (std::size_t i = 0; i < q.size(); ++i)
+    out.push_back({path.filename().string() + "#" + std::to_string(i), vf, q.rows[i], io::exact_double_rows(q.rows[i])});
+}
+
+/// All shared and bundled benchmark files, and a few wide-exponent queries.
+const std::vector<Query>& all_queries() {
+  static const std::vector<Query> queries = [] {
+    std::vector<Query> out;
+    std::vector<fs::path> files;
+    for (const char* dir : {"sim", "catalogue", "families"})
+      for (const auto& e : fs::directory_iterator(fs::path(EXACTCCD_SOURCE_DIR) / "data" / dir))
+        if (e.path().extension() == ".csv") files.push_back(e.path());
+    const fs::path sample = fs::path(EXACTCCD_SAMPLE_QUERIES_DIR) / "unit-tests";
+    if (fs::exists(sample))
+      for (const char* kind : {"vertex-face", "edge-edge"})
+        for (const auto& e : fs::directory_iterator(sample / kind))
+          if (e.path().extension() == ".csv") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& f : files) load_csv(f, out);
+    // The wide-exponent query of issue 10 (collides at t = 1/2; the static volume filter once
+    // answered no), and its edge-edge analogue built from the same points.
+    const std::array<Vec3, 8> wide{Vec3{0x1p-360, 0x1p-539, 0}, Vec3{0, 0, 0}, Vec3{0x1p200, 0, 1},
+                                   Vec3{0, 0x1p-538, 0},        Vec3{0x1p-360, 0x1p-539, 0x1p-559},
+                                   Vec3{0, 0, 0},               Vec3{0x1p200, 0, 1},
+                                   Vec3{0, 0x1p-538, 0}};
+    std::array<RationalVec3, 8> rational;
+    for (std::size_t i = 0; i < 8; ++i) rational[i] = {wide[i].x, wide[i].y, wide[i].z};
+    out.push_back({"wide vertex-face", true, rational, wide});
+    out.push_back({"wide edge-edge", false, rational, wide});
+    return out;
+  }();
+  return queries;
+}
+
+bool have_shared_data() { return fs::exists(fs::path(EXACTCCD_SAMPLE_QUERIES_DIR) / "unit-tests"); }
+
+// ---- answering a query through every entry point ------------------------------------------
+
+/// The answers of one query through every entry point, as a flat list of TOIs (nullopt: no
+/// collision; a boolean answer is recorded as [0, 0] or nullopt). Checks the control state after
+/// every call against `expected`.
+std::vector<std::optional<TimeInterval>> answers(const Query& q, bool with_exact, const ControlState& expected) {
+  std::vector<std::optional<TimeInterval>> out;
+  const auto boolean = [](bool b) { return b ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt; };
+  const auto check = [&](const char* entry) {
+    const ControlState now = control_state();
+    EXPECT_TRUE(now == expected) << q.where << ": " << entry << " left " << describe(now) << ", expected "
+                                 << describe(expected);
+  };
+  // Rational entry points (every query; the CGAL path, so only with_exact for doubles).
+  if (!q.doubles || with_exact) {
+    if (q.vertex_face) {
+      const auto r = from_rows<RationalVertexFaceQuery>(q.rational);
+      out.push_back(boolean(vertex_face_ccd(r)));
+      check("vertex_face_ccd(rational)");
+      out.push_back(vertex_face_toi(r));
+      check("vertex_face_toi(rational)");
+    } else {
+      const auto r = from_rows<RationalEdgeEdgeQuery>(q.rational);
+      out.push_back(boolean(edge_edge_ccd(r)));
+      check("edge_edge_ccd(rational)");
+      out.push_back(edge_edge_toi(r));
+      check("edge_edge_toi(rational)");
+    }
+  }
+  if (!q.doubles) return out;
+  const std::array<Vec3, 8>& d = *q.doubles;
+  std::vector<Method> methods{Method::filtered, Method::naive};
+  if (with_exact) methods.push_back(Method::exact);
+  double flat[24];
+  for (int i = 0; i < 8; ++i) flat[3 * i] = d[i].x, flat[3 * i + 1] = d[i].y, flat[3 * i + 2] = d[i].z;
+  const auto e = [&](int i) { return Eigen::Vector3d(d[i].x, d[i].y, d[i].z); };
+  int collides = -1;
+  double lo = -1, hi = -1;
+  if (q.vertex_face) {
+    const auto v = from_rows<VertexFaceQuery>(d);
+    out.push_back(boolean(vertex_face_ccd(v)));
+    check("vertex_face_ccd");
+    out.push_back(vertex_face_toi(v));
+    check("vertex_face_toi");
+    for (Method m : methods) {
+      StageCounters c;
+      out.push_back(boolean(vertex_face_ccd(v, m)));
+      check("vertex_face_ccd(method)");
+      out.push_back(boolean(vertex_face_ccd(v, m, c)));
+      check("vertex_face_ccd(method, counters)");
+      out.push_back(vertex_face_toi(v, m));
+      check("vertex_face_toi(method)");
+      out.push_back(vertex_face_toi(v, m, c));
+      check("vertex_face_toi(method, counters)");
+    }
+    EXPECT_EQ(exactccd_vertex_face_ccd(flat, &collides), EXACTCCD_OK);
+    out.push_back(boolean(collides == 1));
+    check("exactccd_vertex_face_ccd");
+    EXPECT_EQ(exactccd_vertex_face_toi(flat, &collides, &lo, &hi), EXACTCCD_OK);
+    out.push_back(collides ? std::optional<TimeInterval>(TimeInterval{lo, hi}) : std::nullopt);
+    check("exactccd_vertex_face_toi");
+    out.push_back(boolean(vertex_face_ccd(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7))));
+    check("vertex_face_ccd(Eigen)");
+    out.push_back(vertex_face_toi(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7)));
+    check("vertex_face_toi(Eigen)");
+  } else {
+    const auto v = from_rows<EdgeEdgeQuery>(d);
+    out.push_back(boolean(edge_edge_ccd(v)));
+    check("edge_edge_ccd");
+    out.push_back(edge_edge_toi(v));
+    check("edge_edge_toi");
+    for (Method m : methods) {
+      StageCounters c;
+      out.push_back(boolean(edge_edge_ccd(v, m)));
+      check("edge_edge_ccd(method)");
+      out.push_back(boolean(edge_edge_ccd(v, m, c)));
+      check("edge_edge_ccd(method, counters)");
+      out.push_back(edge_edge_toi(v, m));
+      check("edge_edge_toi(method)");
+      out.push_back(edge_edge_toi(v, m, c));
+      check("edge_edge_toi(method, counters)");
+    }
+    EXPECT_EQ(exactccd_edge_edge_ccd(flat, &collides), EXACTCCD_OK);
+    out.push_back(boolean(collides == 1));
+    check("exactccd_edge_edge_ccd");
+    EXPECT_EQ(exactccd_edge_edge_toi(flat, &collides, &lo, &hi), EXACTCCD_OK);
+    out.push_back(collides ? std::optional<TimeInterval>(TimeInterval{lo, hi}) : std::nullopt);
+    check("exactccd_edge_edge_toi");
+    out.push_back(boolean(edge_edge_ccd(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7))));
+    check("edge_edge_ccd(Eigen)");
+    out.push_back(edge_edge_toi(e(0), e(1), e(2), e(3), e(4), e(5), e(6), e(7)));
+    check("edge_edge_toi(Eigen)");
+  }
+  return out;
+}
+
+/// The CGAL path costs ~100 us per query: every 7th double query takes it in every environment.
+bool with_exact(std::size_t i) { return i % 7 == 0; }
+
+std::string describe(const std::optional<TimeInterval>& t) {
+  if (!t) return "none";
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "[%a, %a]", t->lo, t->hi);
+  return buf;
+}
+
+class EveryEnvironment : public ::testing::TestWithParam<Environment> {};
+
+TEST_P(EveryEnvironment, QueriesGiveDefaultAnswersAndLeaveTheEnvironment) {
+  const Environment env = GetParam();
+  if (!supported(env)) GTEST_SKIP() << "cannot install " << env.name << " on this platform";
+  if (!have_shared_data())
+    std::cout << "[ note     ] shared sample not found under " << EXACTCCD_SAMPLE_QUERIES_DIR
+              << ": bundled data only\n";
+  const std::vector<Query>& queries = all_queries();
+  ASSERT_GT(queries.size(), 3000u);
+  std::vector<std::vector<std::optional<TimeInterval>>> reference;
+  {
+    const RestoreDefault restore;
+    std::fesetenv(FE_DFL_ENV);
+    const ControlState dfl = control_state();
+    for (std::size_t i = 0; i < queries.size(); ++i) reference.push_back(answers(queries[i], with_exact(i), dfl));
+  }
+  const RestoreDefault restore;
+  install(env);
+  const ControlState installed = control_state();
+  std::size_t differences = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const auto got = answers(queries[i], with_exact(i), installed);
+    ASSERT_EQ(got.size(), reference[i].size());
+    for (std::size_t k = 0; k < got.size(); ++k)
+      if (got[k].has_value() != reference[i][k].has_value() || (got[k] && !(*got[k] == *reference[i][k]))) {
+        if (++differences <= 10)
+          ADD_FAILURE() << env.name << ": " << queries[i].where << " answer " << k << ": " << describe(got[k])
+                        << " instead of " << describe(reference[i][k]);
+      }
+  }
+  EXPECT_EQ(differences, 0u);
+  EXPECT_TRUE(control_state() == installed);
+}
+
+TEST_P(EveryEnvironment, ThrowingEntryPointsRestoreTheEnvironment) {
+  const Environment env = GetParam();
+  if (!supported(env)) GTEST_SKIP() << "cannot install " << env.name << " on this platform";
+  const RestoreDefault restore;
+  install(env);
+  const ControlState installed = control_state();
+  // A NaN coordinate: std::invalid_argument from inside the entry point's environment guard.
+  VertexFaceQuery vf{};
+  vf.p_t1.z = std::numeric_limits<double>::quiet_NaN();
+  EdgeEdgeQuery ee{};
+  ee.b1_t0.x = std::numeric_limits<double>::infinity();
+  for (Method m : {Method::filtered, Method::exact, Method::naive}) {
+    EXPECT_THROW(vertex_face_ccd(vf, m), std::invalid_argument);
+    EXPECT_TRUE(control_state() == installed) << env.name << " after vertex_face_ccd threw";
+    EXPECT_THROW(edge_edge_toi(ee, m), std::invalid_argument);
+    EXPECT_TRUE(control_state() == installed) << env.name << " after edge_edge_toi threw";
+  }
+  double flat[24] = {};
+  flat[7] = std::numeric_limits<double>::quiet_NaN();
+  int collides = 0;
+  EXPECT_EQ(exactccd_vertex_face_ccd(flat, &collides), EXACTCCD_ERROR_NON_FINITE);
+  EXPECT_TRUE(control_state() == installed);
+  // A malformed scene (an index out of range) throws from inside the scene functions' guard.
+  Scene bad;
+  bad.positions_t0 = bad.positions_t1 = {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+  bad.triangles = {{0, 1, 7}};
+  EXPECT_THROW(find_collisions(bad), std::invalid_argument);
+  EXPECT_TRUE(control_state() == installed);
+  EXPECT_THROW(earliest_toi(bad), std::invalid_argument);
+  EXPECT_TRUE(control_state() == installed);
+  EXPECT_THROW(intersection_free(bad.positions_t0, bad.triangles), std::invalid_argument);
+  EXPECT_TRUE(control_state() == installed);
+}
+
+// ---- scenes -------------------------------------------------------------------------------
+
+Scene load_scene(const std::string& name) {
+  const fs::path dir = fs::path(EXACTCCD_SOURCE_DIR) / "data" / "scenes" / name;
+  std::ifstream in0(dir / "T0.obj"), in1(dir / "T1.obj");
+  const io::ObjMesh m0 = io::read_obj(in0, "T0.obj"), m1 = io::read_obj(in1, "T1.obj");
+  Scene s;
+  s.positions_t0 = m0.vertices;
+  s.positions_t1 = m1.vertices;
+  s.triangles = m0.triangles;
+  return s;
+}
+
+struct SceneAnswers {
+  std::vector<Collision> collisions;
+  std::optional<TimeInterval> earliest;
+  bool collision_free = false;
+  double step = -1;
+  bool free0 = false, free1 = false;
+};
+
+bool operator==(const SceneAnswers& a, const SceneAnswers& b) {
+  if (a.collisions.size() != b.collisions.size()) return false;
+  for (std::size_t i = 0; i < a.collisions.size(); ++i) {
+    const Collision &x = a.collisions[i], &y = b.collisions[i];
+    if (x.kind != y.kind || x.vertex != y.vertex || x.triangle != y.triangle || x.edge_a != y.edge_a ||
+        x.edge_b != y.edge_b || !(x.toi == y.toi))
+      return false;
+  }
+  return a.earliest.has_value() == b.earliest.has_value() && (!a.earliest || *a.earliest == *b.earliest) &&
+         a.collision_free == b.collision_free && a.step == b.step && a.free0 == b.free0 && a.free1 == b.free1;
+}
+
+SceneAnswers scene_answers(const Scene& s, const ControlState& expected) {
+  SceneOptions two_threads;
+  two_threads.threads = 2;  // workers inherit the caller's environment: they must reset it too
+  SceneAnswers a;
+  a.collisions = find_collisions(s, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "find_collisions";
+  a.earliest = earliest_toi(s, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "earliest_toi";
+  a.collision_free = is_collision_free(s, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "is_collision_free";
+  a.step = max_collision_free_step(s, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "max_collision_free_step";
+  EXPECT_EQ(a.step, max_collision_free_step(earliest_toi(a.collisions)));
+  EXPECT_TRUE(control_state() == expected) << "earliest_toi(collisions), max_collision_free_step(toi)";
+  a.free0 = intersection_free(s.positions_t0, s.triangles);
+  a.free1 = intersection_free(s.positions_t1, s.triangles);
+  EXPECT_TRUE(control_state() == expected) << "intersection_free";
+  return a;
+}
+
+TEST_P(EveryEnvironment, ScenesGiveDefaultAnswersAndLeaveTheEnvironment) {
+  const Environment env = GetParam();
+  if (!supported(env)) GTEST_SKIP() << "cannot install " << env.name << " on this platform";
+  for (const char* name : {"cloth", "strip", "fold", "pile"}) {
+    const Scene s = load_scene(name);
+    SceneAnswers reference;
+    {
+      const RestoreDefault restore;
+      std::fesetenv(FE_DFL_ENV);
+      reference = scene_answers(s, control_state());
+    }
+    EXPECT_FALSE(reference.collisions.empty()) << name << ": the bundled scenes all have contacts";
+    const RestoreDefault restore;
+    install(env);
+    const SceneAnswers got = scene_answers(s, control_state());
+    EXPECT_TRUE(got == reference) << env.name << ": scene " << name << " answers differ";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(FpEnvironment, EveryEnvironment, ::testing::ValuesIn(kEnvironments),
+                         [](const ::testing::TestParamInfo<Environment>& info) { return info.param.name; });
+
+// ---- the guard itself and fault injection -------------------------------------------------
+
+TEST(DefaultFpEnvironment, InstallsTheDefaultAndRestoresOnException) {
+  const RestoreDefault restore;
+  install(Environment{"downward_ftz", FE_DOWNWARD, true, false});
+  const ControlState installed = control_state();
+  EXPECT_FALSE(filter::is_default_fp_environment());
+  try {
+    const filter::DefaultFpEnvironment guard;
+    EXPECT_TRUE(guard.changed());
+    EXPECT_TRUE(filter::is_default_fp_environment());
+    EXPECT_EQ(std::fegetround(), FE_TONEAREST);
+    volatile double tiny = 0x1p-1070;
+    EXPECT_EQ(tiny * 0.5, 0x1p-1071) << "gradual underflow inside the guard";
+    throw std::runtime_error("leaving the guard by an exception");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_TRUE(control_state() == installed) << describe(control_state());
+  std::fesetenv(FE_DFL_ENV);
+  const filter::DefaultFpEnvironment nested;
+  EXPECT_FALSE(nested.changed()) << "a guard in the default environment changes nothing";
+}
+
+/// Calls f once per allocation it makes, making that allocation throw std::bad_alloc, until f
+/// completes; after each throw the caller's control state must be unchanged. Returns the
+/// number of throws and how many happened while the library had switched the rounding mode
+/// (the caller's mode is downward: to nearest is the entry points' guard, upward CGAL's
+/// Protect_FPU_rounding inside it).
+struct Faults {
+  long throws = 0, inside_guard = 0, inside_upward = 0;
+};
+
+template <class F>
+Faults inject_allocation_failures(F&& f, const ControlState& expected) {
+  Faults faults;
+  for (long n = 0;; ++n) {
+    rounding_at_failure = -1;
+    allocations_until_failure = n;
+    bool threw = false;
+    try {
+      f();
+    } catch (const std::bad_alloc&) {
+      threw = true;
+    }
+    allocations_until_failure = -1;
+    if (!threw) break;
+    ++faults.throws;
+    faults.inside_guard += rounding_at_failure != FE_DOWNWARD;
+    faults.inside_upward += rounding_at_failure == FE_UPWARD;
+    EXPECT_TRUE(control_state() == expected) << "after the failure of allocation " << n << ": "
+                                             << describe(control_state());
+    if (n > 200000) {
+      ADD_FAILURE() << "no end to the allocations";
+      break;
+    }
+  }
+  return faults;
+}
+
+TEST(DefaultFpEnvironment, RestoredWhenAnAllocationFailsAnywhere) {
+  const RestoreDefault restore;
+  install(Environment{"downward_ftz", FE_DOWNWARD, true, false});
+  const ControlState installed = control_state();
+  // Queries that reach the interval stage, the integer stage and the CGAL path.
+  const VertexFaceQuery through_vertex{{0.0, 0.0, 1.0},  {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
+                                       {0.0, 0.0, -2.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}};
+  Faults all;
+  const auto add = [&all](const Faults& f) {
+    all.throws += f.throws;
+    all.inside_guard += f.inside_guard;
+    all.inside_upward += f.inside_upward;
+  };
+  for (Method m : {Method::filtered, Method::exact})
+    add(inject_allocation_failures([&] { (void)vertex_face_toi(through_vertex, m); }, installed));
+  Scene s;  // built outside the injection: only the library's allocations fail
+  s.positions_t0 = {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0.25, 0.25, 1}};
+  s.positions_t1 = {Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0.25, 0.25, -1}};
+  s.triangles = {{0, 1, 2}};
+  s.points = {3};
+  SceneOptions one_thread;
+  one_thread.threads = 1;
+  add(inject_allocation_failures([&] { (void)find_collisions(s, one_thread); }, installed));
+  // No allocation happens inside CGAL's upward switches on these paths (the interval stage does
+  // not allocate); every failure inside the library is inside the guard's switch to nearest.
+  std::cout << "[ faults   ] " << all.throws << " allocation failures injected, " << all.inside_guard
+            << " inside the entry points' environment switch, " << all.inside_upward
+            << " inside an upward-rounding switch\n";
+  EXPECT_GT(all.throws, 50);
+  EXPECT_EQ(all.inside_guard, all.throws) << "a failure outside the guard: the test lost its point";
+}
+
+}  // namespace
+}  // namespace exactccd
