@@ -38,6 +38,11 @@
 #include <vector>
 
 #include "exactccd/exactccd.hpp"
+#include "filter/fp_environment.hpp"
+#include "filter/integer_stage.hpp"
+#include "filter/interval_stage.hpp"
+#include "filter/static_stage.hpp"
+#include "filter/volume_exclusion.hpp"
 
 #ifndef EXACTCCD_SAMPLE_QUERIES_DIR
 #define EXACTCCD_SAMPLE_QUERIES_DIR "/work/shared/data/sample-queries"
@@ -1100,10 +1105,52 @@ TEST(FilteredInput, ConcurrentCallsGiveTheSequentialAnswers) {
   }
 }
 
+/// Runs every stage of the filtered method on q directly (each one that applies), checking after
+/// each that the thread's whole floating-point control state (rounding mode of SSE and x87,
+/// FTZ/DAZ, exception masks) is the default again. Returns how many stage calls it made.
+int run_each_stage_checking_environment(const TestQuery& q) {
+  int calls = 0;
+  const auto check = [&](const char* stage) {
+    ++calls;
+    EXPECT_TRUE(filter::is_default_fp_environment()) << stage << " changed the environment: " << describe(q);
+  };
+  const auto stages = [&](const auto& query) {
+    (void)filter::vertex_face_volume_excluded(from_rows<VertexFaceQuery>(q.rows));
+    (void)filter::edge_edge_volume_excluded(from_rows<EdgeEdgeQuery>(q.rows));
+    check("volume exclusion");
+    (void)filter::contact_at_end(query, 0);
+    (void)filter::volume_sign_at_end(query, 1);
+    check("static predicates");
+    filter::StageResult interval;
+    if (q.kind == Kind::vertex_face)
+      interval = filter::vertex_face_interval_stage(from_rows<VertexFaceQuery>(q.rows), true);
+    else
+      interval = filter::edge_edge_interval_stage(from_rows<EdgeEdgeQuery>(q.rows), true);
+    check("interval stage");
+    if (interval.toi_cell) {
+      (void)filter::toi_in_cell(query, *interval.toi_cell);
+      check("toi_in_cell (double-double and GMP signs)");
+    }
+    if (q.kind == Kind::vertex_face)
+      (void)filter::vertex_face_integer_stage(from_rows<VertexFaceQuery>(q.rows), true);
+    else
+      (void)filter::edge_edge_integer_stage(from_rows<EdgeEdgeQuery>(q.rows), true);
+    check("integer stage");
+  };
+  if (q.kind == Kind::vertex_face)
+    stages(from_rows<VertexFaceQuery>(q.rows));
+  else
+    stages(from_rows<EdgeEdgeQuery>(q.rows));
+  return calls;
+}
+
 TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
-  // check_agreement checks the rounding mode after every call; here the queries are chosen so
-  // that, together, they reach every stage of the filtered method (asserted with counters).
-  ASSERT_EQ(std::fegetround(), FE_TONEAREST);
+  // Every stage switches the rounding mode (interval arithmetic rounds upwards; CGAL's static
+  // predicates need to-nearest inside that) and must restore the whole control state, on every
+  // path. The queries are chosen so that, together, they reach every stage of the filtered
+  // method through the public API (asserted with the counters below, every counter), and each
+  // stage is also run directly on each of them, with the state checked after each stage.
+  ASSERT_TRUE(filter::is_default_fp_environment());
   StageCounters counters;
   std::vector<TestQuery> queries = shared_or_no_queries();
   for (Kind kind : {Kind::vertex_face, Kind::edge_edge}) queries.push_back(simple_query(kind));
@@ -1126,22 +1173,45 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
        Vec3{-0x1.552e03c239349p-4, -0x1p-1, 0x1.6bca68bce12dp-11},
        Vec3{-0x1.ffc505a355cf6p-4, -0x1.d555555555555p-2, -0x1.ce8767762e64p-11}},
       1});
+  // A static pair (nothing moves: CGAL's static predicates decide).
+  queries.push_back(TestQuery{Kind::vertex_face,
+                              {Vec3{0.25, 0.25, 0}, Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0},
+                               Vec3{0.25, 0.25, 0}, Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}},
+                              1});
+  // A degenerate grid query scaled per axis by 2^383, 2^-697 and 1 (an exact affine map): its
+  // roots are separated by less than 2^-192, past the integer stage's refinement limit, so the
+  // CGAL path decides it.
+  queries.push_back(TestQuery{Kind::vertex_face,
+                              {Vec3{-0x1p+383, -0x1p-697, 0}, Vec3{0x1p+383, -0x1p-697, 0}, Vec3{0x1p+384, 0x1p-697, 0},
+                               Vec3{-0x1p+384, 0, 0}, Vec3{0x1p+384, 0x1p-697, 0}, Vec3{0, 0x1p-696, 0},
+                               Vec3{-0x1p+383, 0x1p-696, 0}, Vec3{-0x1p+384, 0x1p-696, 0}},
+                              -1});
+  // A generic hit whose TOI the interval stage hands over as a cell (toi_refined).
+  queries.push_back(TestQuery{Kind::vertex_face,
+                              {Vec3{0.3, 0.2, 1.0}, Vec3{0.0, 0.0, 0.0}, Vec3{1.0, 0.1, 0.0}, Vec3{0.1, 1.0, 0.05},
+                               Vec3{0.31, 0.21, -0.7}, Vec3{0.0, 0.0, 0.1}, Vec3{1.0, 0.1, 0.1}, Vec3{0.1, 1.0, 0.1}},
+                              1});
+  int stage_calls = 0;
   for (const TestQuery& q : queries) {
     call_ccd(q, Method::filtered, &counters);
-    ASSERT_EQ(std::fegetround(), FE_TONEAREST) << describe(q);
+    ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
     call_toi(q, Method::filtered, &counters);
-    ASSERT_EQ(std::fegetround(), FE_TONEAREST) << describe(q);
+    ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
     for (Method m : {Method::exact, Method::naive}) {
       call_ccd(q, m, nullptr);
-      ASSERT_EQ(std::fegetround(), FE_TONEAREST) << describe(q);
+      ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
       call_toi(q, m, nullptr);
-      ASSERT_EQ(std::fegetround(), FE_TONEAREST) << describe(q);
+      ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
     }
+    stage_calls += run_each_stage_checking_environment(q);
   }
+  std::cout << "[ stages   ] reached " << describe(counters) << "; " << stage_calls << " direct stage calls\n";
   EXPECT_GT(counters.volume_exclusion, 0u);
+  EXPECT_GT(counters.static_predicates, 0u);
   EXPECT_GT(counters.interval, 0u);
   EXPECT_GT(counters.integer, 0u);
-  std::cout << "[ stages   ] reached " << describe(counters) << "\n";
+  EXPECT_GT(counters.exact, 0u);
+  EXPECT_GT(counters.toi_refined, 0u);
 }
 
 }  // namespace
