@@ -11,11 +11,11 @@
 // Unmasked exceptions would turn the filters' intended overflows into traps.
 //
 // The guard costs one read of the control registers when the caller is already in the default
-// environment (the common case: nothing is written, so nothing is restored); otherwise it saves
-// the whole environment (fegetenv), installs the default one (FE_DFL_ENV: round to nearest, all
-// exceptions masked, no FTZ/DAZ) and restores the saved one on destruction, also when an
-// exception leaves the scope. Status flags (inexact, underflow, ...) raised while the caller's
-// environment was the default one are left raised, as by any floating-point computation.
+// environment (the common case: nothing is written, so nothing is restored); otherwise it
+// installs the default one (round to nearest, all exceptions masked, no FTZ/DAZ) and restores
+// the caller's on destruction, also when an exception leaves the scope. Status flags (inexact,
+// underflow, ...) raised while the caller's environment was the default one are left raised, as
+// by any floating-point computation; after a switch they are restored as found.
 #pragma once
 
 #include <cfenv>
@@ -59,26 +59,70 @@ inline bool is_default_fp_environment() noexcept {
 /// guard's lifetime when it is not already in place, and restores the caller's one on
 /// destruction. Not copyable; one per scope, nestable (an inner guard finds the default
 /// environment and does nothing).
+///
+/// On x86-64 the control registers are switched directly (stmxcsr/ldmxcsr, fnstcw/fldcw: a few
+/// nanoseconds), which is all a caller in directed rounding, in its own
+/// CGAL::Protect_FPU_rounding or with FTZ/DAZ needs. Only when the caller has unmasked x87
+/// exceptions is the whole environment saved and restored (fegetenv/fesetenv, ~250 ns), so that
+/// no x87 status flag raised inside becomes a pending exception at the caller's next x87
+/// instruction. Elsewhere fegetenv/fesetenv is used whenever the environment is not the default.
 class DefaultFpEnvironment {
  public:
-  DefaultFpEnvironment() noexcept : changed_(!is_default_fp_environment()) {
-    if (changed_) {
+  DefaultFpEnvironment() noexcept {
+#if defined(__x86_64__) && defined(__GNUC__)
+    mxcsr_ = _mm_getcsr();
+    __asm__ volatile("fnstcw %0" : "=m"(x87_));
+    const bool sse_default = (mxcsr_ & 0xFFC0u) == 0x1F80u;
+    const bool x87_default = (x87_ & 0x0F3Fu) == 0x033Fu;
+    if (sse_default && x87_default) return;
+    if ((x87_ & 0x003Fu) != 0x003Fu) {  // unmasked x87 exceptions: the whole environment
+      mode_ = Mode::whole_environment;
       std::fegetenv(&saved_);
       std::fesetenv(FE_DFL_ENV);
+      return;
     }
+    mode_ = Mode::control_registers;
+    if (!sse_default) _mm_setcsr((mxcsr_ & 0x3Fu) | 0x1F80u);  // keep the status flags
+    if (!x87_default) {
+      const unsigned short default_x87 = 0x037F;
+      __asm__ volatile("fldcw %0" : : "m"(default_x87));
+    }
+#else
+    if (is_default_fp_environment()) return;
+    mode_ = Mode::whole_environment;
+    std::fegetenv(&saved_);
+    std::fesetenv(FE_DFL_ENV);
+#endif
   }
   ~DefaultFpEnvironment() {
-    if (changed_) std::fesetenv(&saved_);
+    switch (mode_) {
+      case Mode::unchanged:
+        break;
+      case Mode::whole_environment:
+        std::fesetenv(&saved_);
+        break;
+      case Mode::control_registers:
+#if defined(__x86_64__) && defined(__GNUC__)
+        _mm_setcsr(mxcsr_);  // the caller's control bits and status flags, as found
+        __asm__ volatile("fldcw %0" : : "m"(x87_));  // every x87 exception stays masked
+#endif
+        break;
+    }
   }
   DefaultFpEnvironment(const DefaultFpEnvironment&) = delete;
   DefaultFpEnvironment& operator=(const DefaultFpEnvironment&) = delete;
 
   /// Whether the caller's environment differed from the default (and is restored at the end).
-  bool changed() const noexcept { return changed_; }
+  bool changed() const noexcept { return mode_ != Mode::unchanged; }
 
  private:
+  enum class Mode { unchanged, control_registers, whole_environment };
+  Mode mode_ = Mode::unchanged;
   std::fenv_t saved_{};
-  bool changed_;
+#if defined(__x86_64__) && defined(__GNUC__)
+  unsigned mxcsr_ = 0;
+  unsigned short x87_ = 0;
+#endif
 };
 
 }  // namespace exactccd::filter

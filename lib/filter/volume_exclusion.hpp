@@ -25,29 +25,35 @@
 // and the threshold tau = fl(10 eps * Q~) >= (10 eps - 10 eps^2) Q~ exceeds that bound. Hence
 // S~ > tau implies S > 0 and S~ < -tau implies S < 0.
 //
-// Range condition (underflow and overflow). The bounds above use the model
-// fl(a op b) = (a op b)(1 + delta), |delta| <= eps, for every operation. With gradual underflow
-// (round to nearest, no flush-to-zero) a sum or difference obeys it always (a subnormal sum is
-// exact), but a product whose exact value is below 2^-1022 in magnitude may err by 2^-1075
-// absolutely, and a later product multiplies that error by an entry: an absolute term added
-// per operation is NOT a valid bound (2^-1075 times an entry 2^200 is 2^-875). So the stage
-// decides only when no product can underflow or overflow: every entry e (a rounded difference,
-// computed exactly or with relative error only) is 0 or 2^-300 <= |e| <= 2^300. Then
-// - a product of two entries is 0 or in [2^-600, 2^600] (normal, relative error only);
-// - such a product is a double of exponent >= -600, a multiple of 2^-652, so a difference of
-//   two of them is 0 or in [2^-652, 2^601];
-// - its product with a third entry is 0 or in [2^-952, 2^902] (normal);
-// - sums of at most nine such terms stay below 2^906: no overflow anywhere, and sums never
-//   underflow (see above);
-// - the permanents have the same products; Q~ is 0 or at least 2^-952, so tau = fl(10 eps Q~)
-//   is 0 or at least 2^-1006 (normal: relative rounding only; 10 eps is exact). Q~ = 0 gives
-//   S~ = 0 and no decision.
-// Outside the range (a wide exponent spread, tiny or huge scenes) the stage passes; the
-// filtered method retries it on the query scaled by a power of two towards 1 and otherwise
-// leaves the query to the later stages, which are sound for every finite input. NaN entries
-// (inf - inf) fail the range test too. All of this assumes round-to-nearest without
-// flush-to-zero or denormals-are-zero: the public entry points establish that environment
-// (fp_environment.hpp).
+// Underflow. The bounds above use the model fl(a op b) = (a op b)(1 + delta), |delta| <= eps.
+// With gradual underflow (round to nearest, no flush-to-zero) a sum or difference obeys it
+// always (a subnormal sum is exact), but a product obeys fl(a b) = a b (1 + delta) + eta with
+// |eta| <= 2^-1075 (eta != 0 only when |a b| < 2^-1022). A later product multiplies such an eta
+// by an entry, so a constant absolute term per operation is NOT a valid bound (2^-1075 times an
+// entry 2^200 is 2^-875: that mistake once gave a false negative). Every computed quantity is a
+// polynomial in the inputs, the deltas and the etas; call X~0 the value of X~ with every eta set
+// to 0 and the same deltas: Shewchuk's bound only uses |delta| <= eps, so it holds between the
+// eta-free values, |S~0 - S| <= (9 eps + 90 eps^2) Q~0. With M >= every |entry| of the group
+// (the 18 entries of the query), each product u_x * fl(v_y w_z - v_z w_y) of a determinant
+// carries |u_x| (|eta_1| + |eta_2|)(1 + eps)^2 + |eta_4| <= (2 M (1 + eps)^2 + 1) 2^-1075; the
+// two sums of a determinant and the two of a group add at most a factor (1 + eps)^4 over the
+// nine such products, so
+//     |S~ - S~0| <= 9 (2 M (1 + eps)^2 + 1)(1 + eps)^4 2^-1075 <= (2 M + 1) 2^-1071 =: A,
+// and likewise |Q~ - Q~0| <= A (the permanents use the same products). Hence
+//     |S~ - S| <= (9 eps + 90 eps^2)(Q~ + A) + A.
+// tau = fl(10 eps Q~) >= (10 eps - 10 eps^2) Q~ - 2^-1075 (it may be subnormal), and
+// tau exceeds the bound when (eps - 100 eps^2) Q~ >= (1 + 9 eps + 90 eps^2) A + 2^-1075, which
+// holds when Q~ >= (M + 1) 2^-1014: then 2^-54 Q~ >= (M + 1) 2^-1068 >= 2 A + 2^-1069. The stage
+// therefore decides only when Q~ >= T = fl(fl(M 2^-1000) + 2^-1000) >= (M + 1) 2^-1001 (the
+// product may underflow by 2^-1075, the sum rounds relatively). Tiny scenes (Q~ below T) and
+// wide exponent spreads (huge M, tiny Q~) pass: the filtered method retries the stage on the
+// query scaled by a power of two towards 1 and otherwise leaves the query to the later stages,
+// which are sound for every finite input.
+// Overflow: an overflowing difference or product makes M, Q~ or S~ infinite or NaN; then T is
+// infinite or one of the comparisons fails, and neither S~ > tau nor S~ < -tau is accepted
+// (tau is infinite whenever Q~ is): the filter does not decide, and a later stage does.
+// All of this assumes round-to-nearest without flush-to-zero or denormals-are-zero: the public
+// entry points establish that environment (fp_environment.hpp).
 #pragma once
 
 #include <cmath>
@@ -74,50 +80,49 @@ inline RoundedDeterminant rounded_determinant(const Vec3& u, const Vec3& v, cons
 }
 
 /// Certified sign of a sum of up to three rounded determinants: +1 or -1 when certain, 0 when
-/// the filter cannot tell (see the bound above; entries must satisfy the range condition).
-inline int certified_group_sign(double sum, double permanent_sum) {
+/// the filter cannot tell. `threshold` is T of the bound above (from the largest entry).
+inline int certified_group_sign(double sum, double permanent_sum, double threshold) {
   constexpr double kEps = 0x1p-53;
+  if (!(permanent_sum >= threshold)) return 0;  // underflow guard, see above; also catches NaN
   const double tau = (10 * kEps) * permanent_sum;
   if (sum > tau) return 1;
   if (sum < -tau) return -1;
-  return 0;  // also for Q~ = 0
+  return 0;
 }
 
-/// The range condition above: e is 0 or 2^-300 <= |e| <= 2^300 (false for NaN). Written with
-/// non-short-circuit operators so that the 18 tests of a query vectorise.
-inline bool in_filter_range(double e) {
-  const double a = std::fabs(e);
-  return (a <= 0x1p300) & ((a >= 0x1p-300) | (a == 0));
-}
-
-inline bool in_filter_range(const Vec3& v) {
-  return in_filter_range(v.x) & in_filter_range(v.y) & in_filter_range(v.z);
+/// The largest |coordinate| of v (NaN cannot occur: entries are differences of finite doubles).
+inline double largest_magnitude(const Vec3& v) {
+  const double x = std::fabs(v.x), y = std::fabs(v.y), z = std::fabs(v.z);
+  const double xy = x > y ? x : y;
+  return xy > z ? xy : z;
 }
 
 /// Certified "V(t) != 0 for every t in [0, 1]" for the volume det[u(t), v(t), w(t)], rows given
-/// at t = 0 and t = 1 as rounded differences of the input points. False means "not proven"
-/// (also whenever an entry is outside the range where the error bound is valid).
+/// at t = 0 and t = 1 as rounded differences of the input points. False means "not proven".
 inline bool volume_certainly_nonzero(const Vec3& u0, const Vec3& u1, const Vec3& v0,
                                      const Vec3& v1, const Vec3& w0, const Vec3& w1) {
-  if (!(in_filter_range(u0) & in_filter_range(u1) & in_filter_range(v0) & in_filter_range(v1) &
-        in_filter_range(w0) & in_filter_range(w1)))
-    return false;
+  double m = 0;
+  for (const Vec3* e : {&u0, &u1, &v0, &v1, &w0, &w1}) {
+    const double l = largest_magnitude(*e);
+    m = m > l ? m : l;
+  }
+  const double threshold = m * 0x1p-1000 + 0x1p-1000;  // T >= (M + 1) 2^-1014, see above
   const RoundedDeterminant d000 = rounded_determinant(u0, v0, w0);
-  const int s0 = certified_group_sign(d000.value, d000.permanent);
+  const int s0 = certified_group_sign(d000.value, d000.permanent, threshold);
   if (s0 == 0) return false;
   const RoundedDeterminant d111 = rounded_determinant(u1, v1, w1);
-  if (certified_group_sign(d111.value, d111.permanent) != s0) return false;
+  if (certified_group_sign(d111.value, d111.permanent, threshold) != s0) return false;
   const RoundedDeterminant d100 = rounded_determinant(u1, v0, w0);
   const RoundedDeterminant d010 = rounded_determinant(u0, v1, w0);
   const RoundedDeterminant d001 = rounded_determinant(u0, v0, w1);
   if (certified_group_sign(d100.value + d010.value + d001.value,
-                           d100.permanent + d010.permanent + d001.permanent) != s0)
+                           d100.permanent + d010.permanent + d001.permanent, threshold) != s0)
     return false;
   const RoundedDeterminant d110 = rounded_determinant(u1, v1, w0);
   const RoundedDeterminant d101 = rounded_determinant(u1, v0, w1);
   const RoundedDeterminant d011 = rounded_determinant(u0, v1, w1);
   return certified_group_sign(d110.value + d101.value + d011.value,
-                              d110.permanent + d101.permanent + d011.permanent) == s0;
+                              d110.permanent + d101.permanent + d011.permanent, threshold) == s0;
 }
 
 inline Vec3 rounded_difference(const Vec3& a, const Vec3& b) {

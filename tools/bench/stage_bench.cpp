@@ -4,6 +4,11 @@
 //   build/stage_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <cfenv>
+#if defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
+
 #include "exactccd/exactccd.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
@@ -60,6 +65,27 @@ void BM_Method(benchmark::State& state, const VertexFaceQuery& query, Method m) 
     benchmark::DoNotOptimize(exactccd::vertex_face_ccd(q, m));
   }
 }
+// The same query with the caller's thread in a non-default floating-point environment: the
+// entry point's guard saves it, installs the default and restores it (fp_environment.hpp).
+void BM_MethodInEnvironment(benchmark::State& state, const VertexFaceQuery& query, Method m, int rounding,
+                            bool ftz_daz) {
+  std::fesetround(rounding);
+#if defined(__x86_64__)
+  if (ftz_daz) _mm_setcsr(_mm_getcsr() | 0x8040u);
+#else
+  (void)ftz_daz;
+#endif
+  VertexFaceQuery q = query;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::vertex_face_ccd(q, m));
+  }
+  std::fesetenv(FE_DFL_ENV);
+}
+BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_miss_upward, kMiss, Method::filtered, FE_UPWARD, false);
+BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_miss_ftz_daz, kMiss, Method::filtered, FE_TONEAREST, true);
+BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_hit_ftz_daz, kHit, Method::filtered, FE_TONEAREST, true);
+
 BENCHMARK_CAPTURE(BM_Method, naive_miss, kMiss, Method::naive);
 BENCHMARK_CAPTURE(BM_Method, filtered_miss, kMiss, Method::filtered);
 BENCHMARK_CAPTURE(BM_Method, exact_miss, kMiss, Method::exact);
