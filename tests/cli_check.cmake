@@ -242,6 +242,21 @@ elseif(CASE STREQUAL "help")
     message(FATAL_ERROR "no arguments: exit ${rc}, expected 2")
   endif()
 
+elseif(CASE STREQUAL "check_small_stack")
+  # Queries whose roots are ~2^-2073 apart (tests/test_bounded_stack.cpp derives answer 1 and
+  # TOI [0, 2^-1074]): answered by both exact methods with the process stack limited to 256 KB (a quarter of the
+  # 1 MB thread stack the contract is stated for; either recursion on the caller's stack crashes here).
+  foreach(kind vertex-face edge-edge)
+    foreach(method filtered exact)
+      execute_process(COMMAND sh -c "ulimit -s 256 && exec \"$0\" check --method ${method} --answers \"$1\""
+                              ${EXE} ${DATA}/wide-close-roots-${kind}.csv
+                      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+      if(NOT rc EQUAL 0 OR NOT out STREQUAL "1\n")
+        message(FATAL_ERROR "${kind} --method ${method} under a 256 KB stack: exit ${rc}, output '${out}'\n${err}")
+      endif()
+    endforeach()
+  endforeach()
+
 else()
   message(FATAL_ERROR "cli_check.cmake: unknown CASE '${CASE}'")
 endif()

@@ -2,9 +2,10 @@
 # Installs what is missing, builds exactccd and runs the whole test suite (CTest), then the
 # same suite built with AddressSanitizer, UndefinedBehaviorSanitizer and LeakSanitizer, then
 # the libFuzzer targets built with clang and their smoke runs (docs/fuzzing.md).
-# Usage: bash tools/test.sh     (build directories: build/, build-asan/, build-fuzz-clang/)
-# EXACTCCD_SKIP_SANITIZERS=1 skips the second pass, EXACTCCD_SKIP_FUZZERS=1 the third (CI
-# always runs both).
+# Usage: bash tools/test.sh     (build directories: build/, build-native/, build-asan/,
+#                                build-fuzz-clang/)
+# A Release build with -march=native runs the suite too. EXACTCCD_SKIP_NATIVE=1,
+# EXACTCCD_SKIP_SANITIZERS=1 and EXACTCCD_SKIP_FUZZERS=1 skip those passes (CI runs them all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
@@ -14,6 +15,16 @@ echo "== Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEXACTCCD_WERROR=ON
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
+
+if [ "${EXACTCCD_SKIP_NATIVE:-0}" != "1" ]; then
+  # The filters' bounds must not depend on the instruction set: the same suite built with
+  # -march=native (FMA, AVX where the machine has them; the library keeps -ffp-contract=off).
+  echo "== Release build with -march=native and tests"
+  cmake -S . -B build-native -DCMAKE_BUILD_TYPE=Release -DEXACTCCD_NATIVE=ON \
+        -DEXACTCCD_BUILD_BENCHMARKS=OFF -DEXACTCCD_WERROR=ON
+  cmake --build build-native -j"$jobs"
+  ctest --test-dir build-native --output-on-failure -j"$jobs" -E '^package\.'
+fi
 
 if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
   echo "== ASan + UBSan + LSan build and tests"

@@ -8,8 +8,10 @@
 //   (a zero-length edge is a point).
 // The time of impact (TOI) is the earliest such t, returned as a certified double interval.
 //
-// All functions are thread-safe: they share no mutable state. They expect the default
-// floating-point environment (round to nearest) and leave it as they found it.
+// All functions are thread-safe: they share no mutable state. They give the same answers in
+// any floating-point environment of the calling thread (any rounding direction, flush-to-zero
+// or denormals-are-zero, unmasked exceptions): each call installs the default environment
+// for its duration and restores the caller's on return, also when it throws.
 #pragma once
 
 #include <optional>

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "contact/contact_rule.hpp"
+#include "exact/stack_budget.hpp"
 
 namespace exactccd::exact {
 namespace {
@@ -122,22 +123,46 @@ std::optional<TimeInterval> toi(const Polys& P) {
   return enclose(AlgebraicKernel(), *t);
 }
 
+/// The most bits of an integer coefficient among the polynomials CGAL may isolate or evaluate
+/// for P (the volume and every in-plane polynomial), which bounds its recursion depth.
+template <class Polys>
+std::size_t coefficient_bits(const Polys& P) {
+  std::size_t bits = 0;
+  const auto note = [&](const auto& p) {
+    if (contact::is_zero(p)) return;
+    const IntegerPoly ip = integer_poly(p);
+    for (int i = 0; i <= CGAL::degree(ip); ++i)
+      bits = std::max(bits, static_cast<std::size_t>(ip[i].bit_size()));
+  };
+  note(P.volume());
+  contact::for_each_in_plane_poly(P, note);
+  return bits;
+}
+
+/// Runs `f` on P with the stack its CGAL isolation provably needs (stack_budget.hpp).
+template <class Polys, class F>
+auto with_stack_for(const Polys& P, F&& f) {
+  decltype(f(P)) result{};
+  run_with_stack_for_depth(descartes_depth_bound(coefficient_bits(P)), [&] { result = f(P); });
+  return result;
+}
+
 }  // namespace
 
 bool vertex_face_ccd(const RationalVertexFaceQuery& q) {
-  return earliest_contact(contact::polynomials(q)).has_value();
+  return with_stack_for(contact::polynomials(q), [](const auto& P) { return earliest_contact(P).has_value(); });
 }
 
 bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) {
-  return earliest_contact(contact::polynomials(q)).has_value();
+  return with_stack_for(contact::polynomials(q), [](const auto& P) { return earliest_contact(P).has_value(); });
 }
 
 std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
-  return toi(contact::polynomials(q));
+  return with_stack_for(contact::polynomials(q), [](const auto& P) { return toi(P); });
 }
 
 std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) {
-  return toi(contact::polynomials(q));
+  return with_stack_for(contact::polynomials(q), [](const auto& P) { return toi(P); });
 }
 
 }  // namespace exactccd::exact
