@@ -14,14 +14,19 @@
 namespace exactccd::exact {
 namespace {
 
-// Bytes per recursion level: 192 measured in a release build (gdb, x86-64, GCC 12); sanitizers
-// and unoptimised builds use several times more, so the estimate is generous there.
+// Bytes per recursion level: 192 measured in a release build (gdb, x86-64, GCC 12), taken
+// twice; sanitizers and unoptimised builds use several times more, so far more there.
 #if defined(__SANITIZE_ADDRESS__) || !defined(NDEBUG)
 constexpr std::size_t kFrameBytes = 4096;
 #else
-constexpr std::size_t kFrameBytes = 768;
+constexpr std::size_t kFrameBytes = 384;
 #endif
-constexpr std::size_t kCallerBudget = std::size_t{256} << 10;  // of a 1 MB thread stack
+// The recursion may use half of a 1 MB thread stack on the caller's thread: with 384-byte
+// levels, polynomials of up to 325-bit coefficients (every query of the shared unit tests,
+// at most 240 bits, and of the bundled simulation sets, at most 320 bits, measured) stay on
+// the caller's thread; a helper thread costs about as much as the CGAL path itself (measured:
+// exact method on the unit tests 85 -> 177 us per query when every query used one).
+constexpr std::size_t kCallerBudget = std::size_t{512} << 10;
 constexpr std::size_t kBaseStack = std::size_t{1} << 20;       // everything but the recursion
 constexpr std::size_t kDepthMargin = 64;
 

@@ -29,7 +29,7 @@ namespace exactccd::exact {
 std::size_t descartes_depth_bound(std::size_t coefficient_bits);
 
 /// Runs `work` on the calling thread when `depth` recursion levels of CGAL's isolation fit the
-/// budget every caller's thread is assumed to have (256 KB for them, of a 1 MB thread stack),
+/// budget every caller's thread is assumed to have (512 KB for them, of a 1 MB thread stack),
 /// otherwise on a new thread whose stack holds `depth` levels (and waits for it; an exception
 /// thrown by `work` is rethrown here). Throws std::runtime_error when that thread cannot start.
 void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& work);
