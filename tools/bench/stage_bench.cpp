@@ -10,6 +10,8 @@
 #endif
 
 #include "exactccd/exactccd.hpp"
+#include "filter/filtered_ccd.hpp"
+#include "filter/fp_environment.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/volume_exclusion.hpp"
@@ -65,6 +67,31 @@ void BM_Method(benchmark::State& state, const VertexFaceQuery& query, Method m) 
     benchmark::DoNotOptimize(exactccd::vertex_face_ccd(q, m));
   }
 }
+// The filter stages without the public entry point (no finiteness check, no floating-point
+// environment guard): the difference to filtered_miss is what the entry point costs.
+void BM_FilteredUnguarded(benchmark::State& state, const VertexFaceQuery& query) {
+  VertexFaceQuery q = query;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::filter::vertex_face_ccd(q, nullptr));
+  }
+}
+BENCHMARK_CAPTURE(BM_FilteredUnguarded, filtered_miss_unguarded, kMiss);
+BENCHMARK_CAPTURE(BM_FilteredUnguarded, filtered_hit_unguarded, kHit);
+
+// The guard alone (fp_environment.hpp): in the default environment it only reads the control
+// registers; in upward rounding it installs the default and restores the caller's.
+void BM_FpEnvironmentGuard(benchmark::State& state, int rounding) {
+  std::fesetround(rounding);
+  for (auto _ : state) {
+    const exactccd::filter::DefaultFpEnvironment guard;
+    benchmark::DoNotOptimize(guard.changed());
+  }
+  std::fesetenv(FE_DFL_ENV);
+}
+BENCHMARK_CAPTURE(BM_FpEnvironmentGuard, caller_default, FE_TONEAREST);
+BENCHMARK_CAPTURE(BM_FpEnvironmentGuard, caller_upward, FE_UPWARD);
+
 // The same query with the caller's thread in a non-default floating-point environment: the
 // entry point's guard saves it, installs the default and restores it (fp_environment.hpp).
 void BM_MethodInEnvironment(benchmark::State& state, const VertexFaceQuery& query, Method m, int rounding,
@@ -85,6 +112,7 @@ void BM_MethodInEnvironment(benchmark::State& state, const VertexFaceQuery& quer
 BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_miss_upward, kMiss, Method::filtered, FE_UPWARD, false);
 BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_miss_ftz_daz, kMiss, Method::filtered, FE_TONEAREST, true);
 BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_hit_ftz_daz, kHit, Method::filtered, FE_TONEAREST, true);
+BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_hit_upward, kHit, Method::filtered, FE_UPWARD, false);
 
 BENCHMARK_CAPTURE(BM_Method, naive_miss, kMiss, Method::naive);
 BENCHMARK_CAPTURE(BM_Method, filtered_miss, kMiss, Method::filtered);
