@@ -42,6 +42,7 @@
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/static_stage.hpp"
+#include "filter/toi_narrowing.hpp"
 #include "filter/volume_exclusion.hpp"
 
 #ifndef EXACTCCD_SAMPLE_QUERIES_DIR

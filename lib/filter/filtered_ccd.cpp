@@ -5,6 +5,7 @@
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/normalize.hpp"
+#include "filter/toi_narrowing.hpp"
 #include "filter/static_stage.hpp"
 #include "filter/volume_exclusion.hpp"
 

@@ -17,12 +17,4 @@ StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi);
 /// Stage 3 for edge-edge; see vertex_face_integer_stage.
 StageResult edge_edge_integer_stage(const EdgeEdgeQuery& q, bool want_toi);
 
-/// The tightest double interval around the root of V in `cell` (a cell from the interval stage:
-/// see VolumeRootCell), by exact signs of V at dyadic points; nullopt when the exact signs at
-/// the cell's ends contradict the cell (then the caller runs the whole stage).
-std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& cell);
-
-/// See toi_in_cell(const VertexFaceQuery&, const VolumeRootCell&).
-std::optional<TimeInterval> toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& cell);
-
 }  // namespace exactccd::filter
