@@ -56,7 +56,10 @@
 // entry points establish that environment (fp_environment.hpp).
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "exactccd/types.hpp"
 
@@ -79,8 +82,28 @@ inline RoundedDeterminant rounded_determinant(const Vec3& u, const Vec3& v, cons
               (std::fabs(vx_wy) + std::fabs(vy_wx)) * std::fabs(u.z)};
 }
 
+/// A computed group sum S~ and a certified bound on its error: |S~ - S| < error.
+struct CertifiedSum {
+  double value;
+  double error;
+};
+
+/// The bound of the comment above for a sum of up to three rounded determinants: tau when
+/// Q~ >= T (`threshold`, from the largest entry), nothing otherwise (underflow could exceed
+/// it) or when a value overflowed.
+inline std::optional<CertifiedSum> certified_group(double sum, double permanent_sum, double threshold) {
+  constexpr double kEps = 0x1p-53;
+  if (!(permanent_sum >= threshold)) return std::nullopt;  // underflow guard; also catches NaN
+  const double tau = (10 * kEps) * permanent_sum;
+  if (!(tau < std::numeric_limits<double>::infinity()) || !(std::fabs(sum) < std::numeric_limits<double>::infinity()))
+    return std::nullopt;
+  return CertifiedSum{sum, tau};
+}
+
 /// Certified sign of a sum of up to three rounded determinants: +1 or -1 when certain, 0 when
 /// the filter cannot tell. `threshold` is T of the bound above (from the largest entry).
+/// The same test as certified_group followed by a comparison with the bound, written out for
+/// the hot path (an overflow makes tau infinite or a comparison false: no sign).
 inline int certified_group_sign(double sum, double permanent_sum, double threshold) {
   constexpr double kEps = 0x1p-53;
   if (!(permanent_sum >= threshold)) return 0;  // underflow guard, see above; also catches NaN
@@ -97,16 +120,47 @@ inline double largest_magnitude(const Vec3& v) {
   return xy > z ? xy : z;
 }
 
-/// Certified "V(t) != 0 for every t in [0, 1]" for the volume det[u(t), v(t), w(t)], rows given
-/// at t = 0 and t = 1 as rounded differences of the input points. False means "not proven".
-inline bool volume_certainly_nonzero(const Vec3& u0, const Vec3& u1, const Vec3& v0,
-                                     const Vec3& v1, const Vec3& w0, const Vec3& w1) {
+/// T of the bound above for the 18 entries of a volume's rows at t = 0 and t = 1.
+inline double underflow_threshold(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1,
+                                  const Vec3& w0, const Vec3& w1) {
   double m = 0;
   for (const Vec3* e : {&u0, &u1, &v0, &v1, &w0, &w1}) {
     const double l = largest_magnitude(*e);
     m = m > l ? m : l;
   }
-  const double threshold = m * 0x1p-1000 + 0x1p-1000;  // T >= (M + 1) 2^-1014, see above
+  return m * 0x1p-1000 + 0x1p-1000;  // T >= (M + 1) 2^-1014, see above
+}
+
+/// V's cubic Bernstein coefficients on [0, 1] times C(3, m) (beta_0 .. beta_3 of the comment
+/// above), each with its certified error bound; nothing when a bound does not apply. The same
+/// computation and proof as volume_certainly_nonzero, for callers that need the coefficients
+/// themselves (the scene's time bounds subdivide them, lib/scene/time_bounds.cpp).
+inline std::optional<std::array<CertifiedSum, 4>> certified_volume_bernstein(const Vec3& u0, const Vec3& u1,
+                                                                             const Vec3& v0, const Vec3& v1,
+                                                                             const Vec3& w0, const Vec3& w1) {
+  const double threshold = underflow_threshold(u0, u1, v0, v1, w0, w1);
+  const RoundedDeterminant d000 = rounded_determinant(u0, v0, w0), d111 = rounded_determinant(u1, v1, w1);
+  const RoundedDeterminant d100 = rounded_determinant(u1, v0, w0), d010 = rounded_determinant(u0, v1, w0),
+                           d001 = rounded_determinant(u0, v0, w1);
+  const RoundedDeterminant d110 = rounded_determinant(u1, v1, w0), d101 = rounded_determinant(u1, v0, w1),
+                           d011 = rounded_determinant(u0, v1, w1);
+  const std::optional<CertifiedSum> b[4] = {
+      certified_group(d000.value, d000.permanent, threshold),
+      certified_group(d100.value + d010.value + d001.value, d100.permanent + d010.permanent + d001.permanent,
+                      threshold),
+      certified_group(d110.value + d101.value + d011.value, d110.permanent + d101.permanent + d011.permanent,
+                      threshold),
+      certified_group(d111.value, d111.permanent, threshold)};
+  for (const auto& x : b)
+    if (!x) return std::nullopt;
+  return std::array<CertifiedSum, 4>{*b[0], *b[1], *b[2], *b[3]};
+}
+
+/// Certified "V(t) != 0 for every t in [0, 1]" for the volume det[u(t), v(t), w(t)], rows given
+/// at t = 0 and t = 1 as rounded differences of the input points. False means "not proven".
+inline bool volume_certainly_nonzero(const Vec3& u0, const Vec3& u1, const Vec3& v0,
+                                     const Vec3& v1, const Vec3& w0, const Vec3& w1) {
+  const double threshold = underflow_threshold(u0, u1, v0, v1, w0, w1);
   const RoundedDeterminant d000 = rounded_determinant(u0, v0, w0);
   const int s0 = certified_group_sign(d000.value, d000.permanent, threshold);
   if (s0 == 0) return false;

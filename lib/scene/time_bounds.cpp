@@ -6,22 +6,12 @@
 #include <cmath>
 #include <limits>
 
+#include "filter/volume_exclusion.hpp"
+
 namespace exactccd::scene {
 namespace {
 
 using Interval = CGAL::Interval_nt<false>;  // only under Protect_FPU_rounding
-
-struct IVec {
-  Interval x, y, z;
-};
-
-IVec difference(const Vec3& a, const Vec3& b) {
-  return {Interval(a.x) - Interval(b.x), Interval(a.y) - Interval(b.y), Interval(a.z) - Interval(b.z)};
-}
-
-Interval det(const IVec& u, const IVec& v, const IVec& w) {
-  return u.x * (v.y * w.z - v.z * w.y) + u.y * (v.z * w.x - v.x * w.z) + u.z * (v.x * w.y - v.y * w.x);
-}
 
 }  // namespace
 
@@ -51,23 +41,26 @@ void add_vertex_until(Box& box, const Vec3& p0, const Vec3& p1, double h) {
 }
 
 // V(t) = det[u(t), v(t), w(t)] with rows linear in t is trilinear: its cubic Bernstein
-// coefficients on [0, 1] are D000, (D100 + D010 + D001) / 3, (D110 + D101 + D011) / 3, D111
-// with D_ijk = det[u_i, v_j, w_k] (design.md, 5.1). De Casteljau's algorithm at h gives the
-// coefficients on [0, h] (b0, b01, b012, b0123); if all four are > 0, V > 0 on [0, h] (a
-// positive combination of non-negative Bernstein polynomials summing to 1), likewise < 0.
-// Every operation is an interval enclosing the exact value (rounding towards +infinity), so
-// a certain sign of every enclosure is the sign of the exact coefficient; an infinite or NaN
-// bound never certifies anything.
+// coefficients on [0, 1] are beta_0, beta_1 / 3, beta_2 / 3, beta_3 (design.md, 5.1). They come
+// from the filtered method's stage 1 with its certified error bounds (one static volume filter,
+// one proof: filter/volume_exclusion.hpp), as intervals [beta~ - tau, beta~ + tau] holding the
+// exact values. De Casteljau's algorithm at h in interval arithmetic (rounding towards
+// +infinity, every operation enclosing the exact value) gives enclosures of the coefficients on
+// [0, h] (b0, b01, b012, b0123); if all four are certainly > 0, V > 0 on [0, h] (a positive
+// combination of non-negative Bernstein polynomials summing to 1), likewise < 0. Where stage 1's
+// bound does not apply (tiny or overflowing entries) nothing is proved.
 bool never_coplanar_until(const std::array<Vec3, 4>& at_t0, const std::array<Vec3, 4>& at_t1, double h) {
+  const auto difference = [](const Vec3& a, const Vec3& b) { return Vec3{a.x - b.x, a.y - b.y, a.z - b.z}; };
+  const auto beta = filter::certified_volume_bernstein(
+      difference(at_t0[1], at_t0[0]), difference(at_t1[1], at_t1[0]), difference(at_t0[2], at_t0[0]),
+      difference(at_t1[2], at_t1[0]), difference(at_t0[3], at_t0[0]), difference(at_t1[3], at_t1[0]));
+  if (!beta) return false;
   CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
-  IVec rows[2][3];
-  for (int i = 0; i < 3; ++i) {
-    rows[0][i] = difference(at_t0[i + 1], at_t0[0]);
-    rows[1][i] = difference(at_t1[i + 1], at_t1[0]);
-  }
-  const auto d = [&](int i, int j, int k) { return det(rows[i][0], rows[j][1], rows[k][2]); };
-  const Interval b0 = d(0, 0, 0), b1 = (d(1, 0, 0) + d(0, 1, 0) + d(0, 0, 1)) / 3,
-                 b2 = (d(1, 1, 0) + d(1, 0, 1) + d(0, 1, 1)) / 3, b3 = d(1, 1, 1);
+  const auto enclosure = [](const filter::CertifiedSum& x) {
+    return Interval(x.value) + Interval(-x.error, x.error);
+  };
+  const Interval b0 = enclosure((*beta)[0]), b1 = enclosure((*beta)[1]) / 3, b2 = enclosure((*beta)[2]) / 3,
+                 b3 = enclosure((*beta)[3]);
   const Interval s(h), r = Interval(1) - s;
   const Interval b01 = r * b0 + s * b1, b12 = r * b1 + s * b2, b23 = r * b2 + s * b3;
   const Interval b012 = r * b01 + s * b12, b123 = r * b12 + s * b23;
