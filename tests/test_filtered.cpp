@@ -1116,26 +1116,26 @@ int run_each_stage_checking_environment(const TestQuery& q) {
     EXPECT_TRUE(filter::is_default_fp_environment()) << stage << " changed the environment: " << describe(q);
   };
   const auto stages = [&](const auto& query) {
-    (void)filter::vertex_face_volume_excluded(from_rows<VertexFaceQuery>(q.rows));
-    (void)filter::edge_edge_volume_excluded(from_rows<EdgeEdgeQuery>(q.rows));
+    (void)filter::volume_excluded(from_rows<VertexFaceQuery>(q.rows));
+    (void)filter::volume_excluded(from_rows<EdgeEdgeQuery>(q.rows));
     check("volume exclusion");
     (void)filter::contact_at_end(query, 0);
     (void)filter::volume_sign_at_end(query, 1);
     check("static predicates");
     filter::StageResult interval;
     if (q.kind == Kind::vertex_face)
-      interval = filter::vertex_face_interval_stage(from_rows<VertexFaceQuery>(q.rows), true);
+      interval = filter::interval_stage(from_rows<VertexFaceQuery>(q.rows), true);
     else
-      interval = filter::edge_edge_interval_stage(from_rows<EdgeEdgeQuery>(q.rows), true);
+      interval = filter::interval_stage(from_rows<EdgeEdgeQuery>(q.rows), true);
     check("interval stage");
     if (interval.toi_cell) {
       (void)filter::toi_in_cell(query, *interval.toi_cell);
       check("toi_in_cell (double-double and GMP signs)");
     }
     if (q.kind == Kind::vertex_face)
-      (void)filter::vertex_face_integer_stage(from_rows<VertexFaceQuery>(q.rows), true);
+      (void)filter::integer_stage(from_rows<VertexFaceQuery>(q.rows), true);
     else
-      (void)filter::edge_edge_integer_stage(from_rows<EdgeEdgeQuery>(q.rows), true);
+      (void)filter::integer_stage(from_rows<EdgeEdgeQuery>(q.rows), true);
     check("integer stage");
   };
   if (q.kind == Kind::vertex_face)

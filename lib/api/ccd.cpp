@@ -10,17 +10,10 @@
 #include "exact/rational_query.hpp"
 #include "filter/filtered_ccd.hpp"
 #include "filter/fp_environment.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd {
 namespace {
-
-template <class Query>
-void require_finite(const Query& q, const char* function) {
-  for (const Vec3& v : rows(q))
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-      throw std::invalid_argument(std::string("exactccd::") + function +
-                                  ": non-finite coordinate (NaN or infinity) in the query");
-}
 
 std::optional<TimeInterval> point_interval(std::optional<double> t) {
   if (!t) return std::nullopt;
@@ -38,35 +31,15 @@ baseline::NaiveVariant naive_variant(Method m) {
   }
 }
 
-// The per-kind entry points of each method, as overload sets, so that one template answers
-// both kinds.
-bool exact_ccd(const VertexFaceQuery& q) { return exact::vertex_face_ccd(exact::to_rational(q)); }
-bool exact_ccd(const EdgeEdgeQuery& q) { return exact::edge_edge_ccd(exact::to_rational(q)); }
-std::optional<TimeInterval> exact_toi(const VertexFaceQuery& q) {
-  return exact::vertex_face_toi(exact::to_rational(q));
-}
-std::optional<TimeInterval> exact_toi(const EdgeEdgeQuery& q) {
-  return exact::edge_edge_toi(exact::to_rational(q));
-}
-std::optional<double> naive_toi(const VertexFaceQuery& q, baseline::NaiveVariant v) {
-  return baseline::naive_vertex_face_toi(q, v);
-}
-std::optional<double> naive_toi(const EdgeEdgeQuery& q, baseline::NaiveVariant v) {
-  return baseline::naive_edge_edge_toi(q, v);
-}
-bool filtered_ccd(const VertexFaceQuery& q, StageCounters* c) { return filter::vertex_face_ccd(q, c); }
-bool filtered_ccd(const EdgeEdgeQuery& q, StageCounters* c) { return filter::edge_edge_ccd(q, c); }
-std::optional<TimeInterval> filtered_toi(const VertexFaceQuery& q, StageCounters* c) {
-  return filter::vertex_face_toi(q, c);
-}
-std::optional<TimeInterval> filtered_toi(const EdgeEdgeQuery& q, StageCounters* c) {
-  return filter::edge_edge_toi(q, c);
-}
-const char* function_name(const VertexFaceQuery&, bool want_toi) {
-  return want_toi ? "vertex_face_toi" : "vertex_face_ccd";
-}
-const char* function_name(const EdgeEdgeQuery&, bool want_toi) {
-  return want_toi ? "edge_edge_toi" : "edge_edge_ccd";
+/// Throws std::invalid_argument, naming the public function (from the kind's description), on
+/// a non-finite coordinate; the name is built only then (no allocation on the hot path).
+template <class Query>
+void require_finite(const Query& q, bool want_toi) {
+  for (const Vec3& v : rows(q))
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+      throw std::invalid_argument("exactccd::" + std::string(kinds::kind_of<Query>::function) +
+                                  (want_toi ? "_toi" : "_ccd") +
+                                  ": non-finite coordinate (NaN or infinity) in the query");
 }
 
 /// A collision without a TOI (for the boolean functions, only its presence matters).
@@ -76,14 +49,14 @@ std::optional<TimeInterval> collides(bool c) { return c ? std::optional(TimeInte
 template <class Query>
 std::optional<TimeInterval> answer(const Query& q, Method method, bool want_toi, StageCounters* counters) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  require_finite(q, function_name(q, want_toi));
+  require_finite(q, want_toi);
   switch (method) {
     case Method::filtered:
-      return want_toi ? filtered_toi(q, counters) : collides(filtered_ccd(q, counters));
+      return filter::filtered(q, want_toi, counters);
     case Method::exact:
-      return want_toi ? exact_toi(q) : collides(exact_ccd(q));
+      return want_toi ? exact::toi(exact::to_rational(q)) : collides(exact::ccd(exact::to_rational(q)));
     default:
-      return point_interval(naive_toi(q, naive_variant(method)));
+      return point_interval(baseline::naive_toi(q, naive_variant(method)));
   }
 }
 
@@ -104,11 +77,11 @@ bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method, StageCounters& counter
 
 bool vertex_face_ccd(const RationalVertexFaceQuery& q) {
   const filter::DefaultFpEnvironment fp_environment;  // CGAL's kernel filters with intervals
-  return exact::vertex_face_ccd(q);
+  return exact::ccd(q);
 }
 bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) {
   const filter::DefaultFpEnvironment fp_environment;
-  return exact::edge_edge_ccd(q);
+  return exact::ccd(q);
 }
 
 std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, Method method) {
@@ -128,11 +101,11 @@ std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method,
 
 std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
   const filter::DefaultFpEnvironment fp_environment;
-  return exact::vertex_face_toi(q);
+  return exact::toi(q);
 }
 std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) {
   const filter::DefaultFpEnvironment fp_environment;
-  return exact::edge_edge_toi(q);
+  return exact::toi(q);
 }
 
 }  // namespace exactccd

@@ -20,11 +20,11 @@ enum class NaiveVariant { plain, tolerance, mpfr24, mpfr53, mpfr113, mpfr256 };
 constexpr double kNaiveTolerance = 1e-6;
 
 /// Naive vertex-face CCD (non-robust): the earliest root found to collide, if any.
-std::optional<double> naive_vertex_face_toi(const VertexFaceQuery& q,
-                                            NaiveVariant variant = NaiveVariant::plain);
+std::optional<double> naive_toi(const VertexFaceQuery& q,
+                                NaiveVariant variant = NaiveVariant::plain);
 
 /// Naive edge-edge CCD (non-robust): the earliest root found to collide, if any.
-std::optional<double> naive_edge_edge_toi(const EdgeEdgeQuery& q,
-                                          NaiveVariant variant = NaiveVariant::plain);
+std::optional<double> naive_toi(const EdgeEdgeQuery& q,
+                                NaiveVariant variant = NaiveVariant::plain);
 
 }  // namespace exactccd::baseline

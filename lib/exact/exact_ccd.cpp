@@ -117,7 +117,7 @@ TimeInterval enclose(const AlgebraicKernel& kernel, const Root& t) {
 }
 
 template <class Polys>
-std::optional<TimeInterval> toi(const Polys& P) {
+std::optional<TimeInterval> earliest_toi(const Polys& P) {
   const std::optional<Root> t = earliest_contact(P);
   if (!t) return std::nullopt;
   return enclose(AlgebraicKernel(), *t);
@@ -147,22 +147,21 @@ auto with_stack_for(const Polys& P, F&& f) {
   return result;
 }
 
+template <class Query>
+bool ccd_of(const Query& q) {
+  return with_stack_for(contact::polynomials(q), [](const auto& P) { return earliest_contact(P).has_value(); });
+}
+
+template <class Query>
+std::optional<TimeInterval> toi_of(const Query& q) {
+  return with_stack_for(contact::polynomials(q), [](const auto& P) { return earliest_toi(P); });
+}
+
 }  // namespace
 
-bool vertex_face_ccd(const RationalVertexFaceQuery& q) {
-  return with_stack_for(contact::polynomials(q), [](const auto& P) { return earliest_contact(P).has_value(); });
-}
-
-bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) {
-  return with_stack_for(contact::polynomials(q), [](const auto& P) { return earliest_contact(P).has_value(); });
-}
-
-std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) {
-  return with_stack_for(contact::polynomials(q), [](const auto& P) { return toi(P); });
-}
-
-std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) {
-  return with_stack_for(contact::polynomials(q), [](const auto& P) { return toi(P); });
-}
+bool ccd(const RationalVertexFaceQuery& q) { return ccd_of(q); }
+bool ccd(const RationalEdgeEdgeQuery& q) { return ccd_of(q); }
+std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q) { return toi_of(q); }
+std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q) { return toi_of(q); }
 
 }  // namespace exactccd::exact

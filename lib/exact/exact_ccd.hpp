@@ -11,15 +11,15 @@
 namespace exactccd::exact {
 
 /// Exact vertex-face CCD: true iff p(t) is in the closed triangle for some t in [0, 1].
-bool vertex_face_ccd(const RationalVertexFaceQuery& q);
+bool ccd(const RationalVertexFaceQuery& q);
 
 /// Exact edge-edge CCD: true iff the closed segments meet for some t in [0, 1].
-bool edge_edge_ccd(const RationalEdgeEdgeQuery& q);
+bool ccd(const RationalEdgeEdgeQuery& q);
 
 /// Earliest contact time of a vertex-face query, enclosed in the tightest double interval.
-std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q);
+std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q);
 
 /// Earliest contact time of an edge-edge query, enclosed in the tightest double interval.
-std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q);
+std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q);
 
 }  // namespace exactccd::exact

@@ -23,11 +23,11 @@ std::optional<TimeInterval> answer(const StageResult& r) {
   return r.verdict == Verdict::collision ? (r.toi ? r.toi : kCollides) : std::nullopt;
 }
 
-/// One query through the stages. Kind bundles the per-primitive functions. Without want_toi a
-/// collision is returned as the placeholder interval [0, 0] (only its presence matters).
-template <class Kind, class Query>
-std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, StageCounters* counters) {
-  if (Kind::volume_excluded(input)) {
+/// One query through the stages (each stage an overload on the query's kind). Without want_toi
+/// a collision is returned as the placeholder interval [0, 0] (only its presence matters).
+template <class Query>
+std::optional<TimeInterval> through_stages(const Query& input, bool want_toi, StageCounters* counters) {
+  if (volume_excluded(input)) {
     count(counters, &StageCounters::volume_exclusion);
     return std::nullopt;
   }
@@ -35,7 +35,7 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
   // coordinates do not overflow or underflow the filters; answers are unchanged.
   bool scaled = false;
   const Query q = scaled_to_unit(input, scaled);
-  if (scaled && Kind::volume_excluded(q)) {
+  if (scaled && volume_excluded(q)) {
     count(counters, &StageCounters::volume_exclusion);
     return std::nullopt;
   }
@@ -44,7 +44,7 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
     if (!contact_at_end(q, 0)) return std::nullopt;
     return want_toi ? std::optional<TimeInterval>(TimeInterval{0.0, 0.0}) : kCollides;
   }
-  const StageResult interval = Kind::interval_stage(q, want_toi);
+  const StageResult interval = interval_stage(q, want_toi);
   if (interval.verdict != Verdict::uncertain) {
     count(counters, &StageCounters::interval);
     if (interval.verdict == Verdict::no_collision || !want_toi || interval.toi)
@@ -53,61 +53,25 @@ std::optional<TimeInterval> filtered_toi(const Query& input, bool want_toi, Stag
     if (interval.toi_cell)  // the TOI is V's simple root in this cell: narrow it exactly
       if (auto toi = toi_in_cell(q, *interval.toi_cell)) return toi;
   }
-  const StageResult integer = Kind::integer_stage(q, want_toi);
+  const StageResult integer = integer_stage(q, want_toi);
   if (integer.verdict != Verdict::uncertain) {
     if (interval.verdict == Verdict::uncertain) count(counters, &StageCounters::integer);
     return answer(integer);
   }
   if (interval.verdict == Verdict::uncertain) count(counters, &StageCounters::exact);
   const auto rational = exact::to_rational(q);
-  if (!want_toi) return Kind::exact_ccd(rational) ? kCollides : std::nullopt;
-  return Kind::exact_toi(rational);
+  if (!want_toi) return exact::ccd(rational) ? kCollides : std::nullopt;
+  return exact::toi(rational);
 }
-
-struct VertexFace {
-  static bool volume_excluded(const VertexFaceQuery& q) { return vertex_face_volume_excluded(q); }
-  static StageResult interval_stage(const VertexFaceQuery& q, bool want_toi) {
-    return vertex_face_interval_stage(q, want_toi);
-  }
-  static StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) {
-    return vertex_face_integer_stage(q, want_toi);
-  }
-  static bool exact_ccd(const RationalVertexFaceQuery& q) { return exact::vertex_face_ccd(q); }
-  static std::optional<TimeInterval> exact_toi(const RationalVertexFaceQuery& q) {
-    return exact::vertex_face_toi(q);
-  }
-};
-
-struct EdgeEdge {
-  static bool volume_excluded(const EdgeEdgeQuery& q) { return edge_edge_volume_excluded(q); }
-  static StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi) {
-    return edge_edge_interval_stage(q, want_toi);
-  }
-  static StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) {
-    return edge_edge_integer_stage(q, want_toi);
-  }
-  static bool exact_ccd(const RationalEdgeEdgeQuery& q) { return exact::edge_edge_ccd(q); }
-  static std::optional<TimeInterval> exact_toi(const RationalEdgeEdgeQuery& q) {
-    return exact::edge_edge_toi(q);
-  }
-};
 
 }  // namespace
 
-bool vertex_face_ccd(const VertexFaceQuery& q, StageCounters* counters) {
-  return filtered_toi<VertexFace>(q, false, counters).has_value();
+std::optional<TimeInterval> filtered(const VertexFaceQuery& q, bool want_toi, StageCounters* counters) {
+  return through_stages(q, want_toi, counters);
 }
 
-bool edge_edge_ccd(const EdgeEdgeQuery& q, StageCounters* counters) {
-  return filtered_toi<EdgeEdge>(q, false, counters).has_value();
-}
-
-std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, StageCounters* counters) {
-  return filtered_toi<VertexFace>(q, true, counters);
-}
-
-std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, StageCounters* counters) {
-  return filtered_toi<EdgeEdge>(q, true, counters);
+std::optional<TimeInterval> filtered(const EdgeEdgeQuery& q, bool want_toi, StageCounters* counters) {
+  return through_stages(q, want_toi, counters);
 }
 
 }  // namespace exactccd::filter

@@ -14,16 +14,12 @@
 
 namespace exactccd::filter {
 
-/// Exact vertex-face CCD through the filter stages; counts the deciding stage in counters.
-bool vertex_face_ccd(const VertexFaceQuery& q, StageCounters* counters);
+/// A vertex-face query through the filter stages, counting the deciding stage in `counters`
+/// (may be null): the tightest TOI when `want_toi`, otherwise, for a collision, the placeholder
+/// interval [0, 0] (only its presence matters). Exact.
+std::optional<TimeInterval> filtered(const VertexFaceQuery& q, bool want_toi, StageCounters* counters);
 
-/// Exact edge-edge CCD through the filter stages; counts the deciding stage in counters.
-bool edge_edge_ccd(const EdgeEdgeQuery& q, StageCounters* counters);
-
-/// Exact vertex-face TOI (tightest double interval) through the filter stages.
-std::optional<TimeInterval> vertex_face_toi(const VertexFaceQuery& q, StageCounters* counters);
-
-/// Exact edge-edge TOI (tightest double interval) through the filter stages.
-std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, StageCounters* counters);
+/// An edge-edge query through the filter stages; see filtered(const VertexFaceQuery&, ...).
+std::optional<TimeInterval> filtered(const EdgeEdgeQuery& q, bool want_toi, StageCounters* counters);
 
 }  // namespace exactccd::filter

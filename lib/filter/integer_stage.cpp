@@ -31,6 +31,7 @@
 #include "contact/contact_rule.hpp"
 #include "exact/integer_poly.hpp"
 #include "filter/integer_query.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::filter {
 namespace {
@@ -216,7 +217,7 @@ bool earlier(const TimeInterval& a, const TimeInterval& b) {
 }
 
 template <class IntegerQuery, class Query>
-StageResult integer_stage(const IntegerQuery& q, const Query& double_query, bool want_toi) {
+StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, bool want_toi) {
   std::deque<IntegerPoly> defining;  // stable addresses for Candidate::defining
   std::vector<Candidate> candidates;
   const auto add_roots_of = [&](const IntegerPoly& p) {  // returns how many roots it added
@@ -293,22 +294,19 @@ StageResult integer_stage(const IntegerQuery& q, const Query& double_query, bool
   return {Verdict::collision, best};
 }
 
-}  // namespace
-
-StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi) {
+template <class Query>
+StageResult integer_stage_of(const Query& q, bool want_toi) {
   try {
-    return integer_stage(to_integer_query<VertexFaceQueryT<Integer>>(q), q, want_toi);
+    using IntegerQuery = typename kinds::kind_of<Query>::template Query<Integer>;
+    return run_integer_stage(to_integer_query<IntegerQuery>(q), q, want_toi);
   } catch (const std::runtime_error&) {  // an internal limit: let the CGAL path decide
     return {};
   }
 }
 
-StageResult edge_edge_integer_stage(const EdgeEdgeQuery& q, bool want_toi) {
-  try {
-    return integer_stage(to_integer_query<EdgeEdgeQueryT<Integer>>(q), q, want_toi);
-  } catch (const std::runtime_error&) {
-    return {};
-  }
-}
+}  // namespace
+
+StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) { return integer_stage_of(q, want_toi); }
+StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return integer_stage_of(q, want_toi); }
 
 }  // namespace exactccd::filter

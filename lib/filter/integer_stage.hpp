@@ -12,9 +12,9 @@ namespace exactccd::filter {
 
 /// Stage 3 for vertex-face: exact; the verdict is never `uncertain` unless an internal limit is
 /// hit (then the CGAL path decides). With want_toi, a collision carries its tightest TOI.
-StageResult vertex_face_integer_stage(const VertexFaceQuery& q, bool want_toi);
+StageResult integer_stage(const VertexFaceQuery& q, bool want_toi);
 
-/// Stage 3 for edge-edge; see vertex_face_integer_stage.
-StageResult edge_edge_integer_stage(const EdgeEdgeQuery& q, bool want_toi);
+/// Stage 3 for edge-edge; see integer_stage(const VertexFaceQuery&, bool).
+StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi);
 
 }  // namespace exactccd::filter

@@ -39,6 +39,7 @@
 
 #include "filter/interval_strategies.hpp"
 #include "filter/static_stage.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::filter {
 namespace {
@@ -71,7 +72,7 @@ struct ExactEnds {
 
 /// The stage on one query.
 template <class IntervalQuery, class Query>
-StageResult interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi) {
+StageResult run_interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi) {
   const auto P = contact::polynomials(q);
   if (interval::exactly_zero(P.volume())) return interval::coplanar_strategy(P, want_toi);
   const StageResult moving = interval::moving_strategy(P, ExactEnds<Query>{double_query}, want_toi);
@@ -91,16 +92,16 @@ StageResult interval_stage(const IntervalQuery& q, const Query& double_query, bo
   return factored;
 }
 
+template <class Query>
+StageResult interval_stage_of(const Query& q, bool want_toi) {
+  CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
+  using IntervalQuery = typename kinds::kind_of<Query>::template Query<Interval>;
+  return run_interval_stage(to_interval_query<IntervalQuery>(q), q, want_toi);
+}
+
 }  // namespace
 
-StageResult vertex_face_interval_stage(const VertexFaceQuery& q, bool want_toi) {
-  CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
-  return interval_stage(to_interval_query<VertexFaceQueryT<Interval>>(q), q, want_toi);
-}
-
-StageResult edge_edge_interval_stage(const EdgeEdgeQuery& q, bool want_toi) {
-  CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
-  return interval_stage(to_interval_query<EdgeEdgeQueryT<Interval>>(q), q, want_toi);
-}
+StageResult interval_stage(const VertexFaceQuery& q, bool want_toi) { return interval_stage_of(q, want_toi); }
+StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi) { return interval_stage_of(q, want_toi); }
 
 }  // namespace exactccd::filter

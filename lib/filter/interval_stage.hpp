@@ -35,9 +35,9 @@ struct StageResult {
 };
 
 /// Stage 2 for vertex-face. With want_toi, a collision's TOI is certified or left empty.
-StageResult vertex_face_interval_stage(const VertexFaceQuery& q, bool want_toi);
+StageResult interval_stage(const VertexFaceQuery& q, bool want_toi);
 
 /// Stage 2 for edge-edge. With want_toi, a collision's TOI is certified or left empty.
-StageResult edge_edge_interval_stage(const EdgeEdgeQuery& q, bool want_toi);
+StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi);
 
 }  // namespace exactccd::filter

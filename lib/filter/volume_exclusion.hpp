@@ -62,6 +62,7 @@
 #include <optional>
 
 #include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::filter {
 
@@ -183,20 +184,18 @@ inline Vec3 rounded_difference(const Vec3& a, const Vec3& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 
-/// Stage 1 for vertex-face: V = (b - a) . ((c - a) x (p - a)) never vanishes on [0, 1].
-inline bool vertex_face_volume_excluded(const VertexFaceQuery& q) {
+/// Stage 1 for any kind: its volume V (kinds::...::volume_rows: det[u - base, v - base,
+/// w - base]) never vanishes on [0, 1], so the four points are never coplanar.
+template <class Query>
+inline bool volume_excluded(const Query& q) {
+  using Kind = kinds::kind_of<Query>;
+  constexpr auto v = Kind::volume_rows;
+  constexpr int n = Kind::points;  // the row of a point at t1 is n rows after its row at t0
+  const auto r = rows(q);
   return volume_certainly_nonzero(
-      rounded_difference(q.b_t0, q.a_t0), rounded_difference(q.b_t1, q.a_t1),
-      rounded_difference(q.c_t0, q.a_t0), rounded_difference(q.c_t1, q.a_t1),
-      rounded_difference(q.p_t0, q.a_t0), rounded_difference(q.p_t1, q.a_t1));
-}
-
-/// Stage 1 for edge-edge: V = (a1 - a0) . ((b0 - a0) x (b1 - a0)) never vanishes on [0, 1].
-inline bool edge_edge_volume_excluded(const EdgeEdgeQuery& q) {
-  return volume_certainly_nonzero(
-      rounded_difference(q.a1_t0, q.a0_t0), rounded_difference(q.a1_t1, q.a0_t1),
-      rounded_difference(q.b0_t0, q.a0_t0), rounded_difference(q.b0_t1, q.a0_t1),
-      rounded_difference(q.b1_t0, q.a0_t0), rounded_difference(q.b1_t1, q.a0_t1));
+      rounded_difference(r[v[1]], r[v[0]]), rounded_difference(r[v[1] + n], r[v[0] + n]),
+      rounded_difference(r[v[2]], r[v[0]]), rounded_difference(r[v[2] + n], r[v[0] + n]),
+      rounded_difference(r[v[3]], r[v[0]]), rounded_difference(r[v[3] + n], r[v[0] + n]));
 }
 
 }  // namespace exactccd::filter

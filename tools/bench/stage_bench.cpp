@@ -37,7 +37,7 @@ void BM_VolumeExclusion(benchmark::State& state) {
   VertexFaceQuery q = kMiss;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::filter::vertex_face_volume_excluded(q));
+    benchmark::DoNotOptimize(exactccd::filter::volume_excluded(q));
   }
 }
 BENCHMARK(BM_VolumeExclusion);
@@ -46,7 +46,7 @@ void BM_IntervalStage(benchmark::State& state) {
   VertexFaceQuery q = kHit;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::filter::vertex_face_interval_stage(q, false));
+    benchmark::DoNotOptimize(exactccd::filter::interval_stage(q, false));
   }
 }
 BENCHMARK(BM_IntervalStage);
@@ -55,7 +55,7 @@ void BM_IntegerStage(benchmark::State& state) {
   VertexFaceQuery q = kThroughVertex;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::filter::vertex_face_integer_stage(q, false));
+    benchmark::DoNotOptimize(exactccd::filter::integer_stage(q, false));
   }
 }
 BENCHMARK(BM_IntegerStage);
@@ -73,7 +73,7 @@ void BM_FilteredUnguarded(benchmark::State& state, const VertexFaceQuery& query)
   VertexFaceQuery q = query;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::filter::vertex_face_ccd(q, nullptr));
+    benchmark::DoNotOptimize(exactccd::filter::filtered(q, false, nullptr));
   }
 }
 BENCHMARK_CAPTURE(BM_FilteredUnguarded, filtered_miss_unguarded, kMiss);
