@@ -68,4 +68,34 @@ std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q);
 /// Earliest time of impact of an edge-edge query with rational coordinates.
 std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q);
 
+/// Overloads on the query type, for code that handles every kind alike (templates): the same
+/// functions as vertex_face_ccd / edge_edge_ccd and vertex_face_toi / edge_edge_toi.
+inline bool ccd(const VertexFaceQuery& q, Method method = Method::filtered) { return vertex_face_ccd(q, method); }
+/// See ccd(const VertexFaceQuery&, Method).
+inline bool ccd(const EdgeEdgeQuery& q, Method method = Method::filtered) { return edge_edge_ccd(q, method); }
+/// See ccd(const VertexFaceQuery&, Method), with statistics.
+inline bool ccd(const VertexFaceQuery& q, Method method, StageCounters& counters) {
+  return vertex_face_ccd(q, method, counters);
+}
+/// See ccd(const VertexFaceQuery&, Method), with statistics.
+inline bool ccd(const EdgeEdgeQuery& q, Method method, StageCounters& counters) {
+  return edge_edge_ccd(q, method, counters);
+}
+/// The TOI of a query of either kind; see ccd(const VertexFaceQuery&, Method).
+inline std::optional<TimeInterval> toi(const VertexFaceQuery& q, Method method = Method::filtered) {
+  return vertex_face_toi(q, method);
+}
+/// See toi(const VertexFaceQuery&, Method).
+inline std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method = Method::filtered) {
+  return edge_edge_toi(q, method);
+}
+/// See toi(const VertexFaceQuery&, Method), with statistics.
+inline std::optional<TimeInterval> toi(const VertexFaceQuery& q, Method method, StageCounters& counters) {
+  return vertex_face_toi(q, method, counters);
+}
+/// See toi(const VertexFaceQuery&, Method), with statistics.
+inline std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, StageCounters& counters) {
+  return edge_edge_toi(q, method, counters);
+}
+
 }  // namespace exactccd
