@@ -129,13 +129,16 @@ MeshFormat detect_mesh_format(const std::string& path) {
                                " (expected " + known_extensions() + ")");
   for (const FormatEntry& e : formats()) {
     if (!e.content_matches(prefix)) continue;
-    if (&e != by_name)
-      throw InputError(path, std::string("the content is ") + (e.format == MeshFormat::obj ? "OBJ text" : "a " + std::string(e.name) + " mesh") +
-                                 " but the extension says " + by_name->name);
-    return e.format;
+    if (&e == by_name) return e.format;
+    // Another format's magic word (or binary STL size), or plain text where a binary or
+    // magic-word format was expected.
+    if (e.format != MeshFormat::obj)
+      throw InputError(path, std::string("the content is ") + e.name + ", but the extension says " + by_name->name);
+    break;
   }
   throw InputError(path, std::string("the content is not ") + by_name->name + " (" +
-                             (is_binary(prefix) ? "binary data" : "no mesh format known here") + ")");
+                             (is_binary(prefix) ? "binary data" : "text without the " + std::string(by_name->name) + " header") +
+                             ")");
 }
 
 TriangleMesh read_mesh(const std::string& path) {
