@@ -29,7 +29,7 @@ FieldError parse_integer(const std::string& field, mpz_class& out) {
   if (i == s.size()) return FieldError::not_an_integer;
   for (std::size_t j = i; j < s.size(); ++j)
     if (s[j] < '0' || s[j] > '9') return FieldError::not_an_integer;
-  // 2^kMaxFieldBits has floor(kMaxFieldBits log10 2) + 1 = 2467 digits: more significant
+  // 2^kMaxFieldBits has floor(kMaxFieldBits log10 2) + 1 = 1234 digits: more significant
   // digits than that is surely too large.
   constexpr std::size_t kMaxDigits = kMaxFieldBits * 30103 / 100000 + 1;
   const std::size_t first_significant = std::min(s.find_first_not_of('0', i), s.size());

@@ -29,12 +29,13 @@ class ParseError : public InputError {
   std::size_t line_;
 };
 
-/// The largest numerator or denominator read_benchmark_csv accepts, in bits (2466 decimal
+/// The largest numerator or denominator read_benchmark_csv accepts, in bits (1233 decimal
 /// digits). Every double fits with room to spare (its numerator has at most 1024 bits, its
 /// denominator at most 1075). The bound caps the cost of the exact path, which grows with the
-/// size of the rationals (a 10^5-digit coordinate ran for more than 15 minutes): README, "Input
-/// files", gives the measured worst case at the limit.
-constexpr std::size_t kMaxFieldBits = 8192;
+/// size of the rationals (a 10^5-digit coordinate ran for more than 15 minutes; at this limit
+/// the worst query measured takes seconds and a few hundred MB, at 8192 bits four times
+/// that): README, "Input files", gives the measured figures and the command.
+constexpr std::size_t kMaxFieldBits = 4096;
 
 /// Queries of one benchmark file: rows[i] are query i's eight points in row order, truth[i]
 /// its published ground truth.
