@@ -96,6 +96,61 @@ TEST(ReadBenchmarkCsv, AcceptsSignsSpacesHugeIntegersAndNoFinalNewline) {
   EXPECT_FALSE(q.truth[0]);
 }
 
+TEST(ReadBenchmarkCsv, RecordsTheLineOfEveryRow) {
+  std::istringstream in("\n" + query_rows(1) + "\n" + query_rows(0));
+  const BenchmarkQueries q = read_benchmark_csv(in, "x");
+  ASSERT_EQ(q.lines.size(), 2u);
+  EXPECT_EQ(q.lines[0][0], 2u);
+  EXPECT_EQ(q.lines[0][7], 9u);
+  EXPECT_EQ(q.lines[1][0], 11u);  // after the blank line 10
+}
+
+TEST(ReadBenchmarkCsv, SkipsAUtf8ByteOrderMark) {
+  std::istringstream in("\xEF\xBB\xBF" + query_rows(1));
+  const BenchmarkQueries q = read_benchmark_csv(in, "x");
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_EQ(q.rows[0][0].x, mpq_class(1, 2));
+  EXPECT_EQ(error_line("\xEF\xBB" + query_rows(1)), 1);  // an incomplete mark is no mark
+}
+
+/// The first row of a query with its x numerator (field 1) or denominator (field 2) set.
+std::string with_field(int field, const std::string& value) {
+  return query_rows(0, field == 1 ? value + ",1,0,1,0,1" : "1," + value + ",0,1,0,1");
+}
+
+TEST(ReadBenchmarkCsv, FieldsUpToTheSizeLimit) {
+  // 2^kMaxFieldBits - 1 has kMaxFieldBits bits: accepted, as numerator and denominator, with
+  // a sign and leading zeros; 2^kMaxFieldBits has one bit more: refused.
+  const mpz_class limit = (mpz_class(1) << kMaxFieldBits) - 1;
+  const std::string at = limit.get_str(), over = mpz_class(limit + 1).get_str();
+  for (int field : {1, 2}) {
+    for (const std::string& v : {at, "-" + at, "000" + at, "+" + at}) {
+      std::istringstream in(with_field(field, v));
+      const BenchmarkQueries q = read_benchmark_csv(in, "x");
+      ASSERT_EQ(q.size(), 1u);
+      EXPECT_EQ(abs(field == 1 ? q.rows[0][0].x.get_num() : q.rows[0][0].x.get_den()), limit);
+    }
+    for (const std::string& v : {over, "-" + over, "00" + over, std::string(100000, '9')}) {
+      std::istringstream in(with_field(field, v));
+      try {
+        read_benchmark_csv(in, "big.csv");
+        ADD_FAILURE() << "accepted a field of " << v.size() << " characters";
+      } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 1u);
+        EXPECT_NE(std::string(e.what()).find("big.csv:1: field " + std::to_string(field) + " has "),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("more than the limit of 4096 bits"), std::string::npos) << e.what();
+      }
+    }
+  }
+  // Every double fits: the largest numerator (DBL_MAX) and denominator (2^-1074).
+  const mpq_class largest(std::numeric_limits<double>::max()), smallest(std::numeric_limits<double>::denorm_min());
+  std::istringstream in(query_rows(0, largest.get_num().get_str() + ",1," + smallest.get_num().get_str() + "," +
+                                          smallest.get_den().get_str() + ",0,1"));
+  EXPECT_EQ(read_benchmark_csv(in, "x").size(), 1u);
+}
+
 TEST(ReadBenchmarkCsv, EmptyInputHasNoQueries) {
   std::istringstream in("\n\r\n");
   EXPECT_EQ(read_benchmark_csv(in, "x").size(), 0u);

@@ -99,5 +99,42 @@ TEST(Obj, ErrorsNameFileAndLine) {
   EXPECT_EQ(error_of(three + "f 1 2 3 -3\n"), "mesh.obj:4: degenerate face: vertex 1 appears twice");
 }
 
+TEST(Obj, StrictKeywordsAndNumbers) {
+  const std::string three = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_EQ(error_of(three + "f 1 2 3\nvx 1 2 3\n"),
+            "mesh.obj:5: unknown OBJ keyword 'vx' (expected v, vt, vn, vp, f, l, p, o, g, s, mtllib, usemtl or a "
+            "# comment)");
+  EXPECT_EQ(error_of("ply\n" + three), "mesh.obj:1: unknown OBJ keyword 'ply' (expected v, vt, vn, vp, f, l, p, o, g, "
+                                        "s, mtllib, usemtl or a # comment)");
+  EXPECT_EQ(error_of(three + "curv 0 1 1 2\n"),
+            "mesh.obj:4: OBJ free-form geometry ('curv') is not supported (triangle and polygon faces only)");
+  EXPECT_EQ(error_of("v 0 0 0 1 2\n"), "mesh.obj:1: vertex with 5 numbers (expected x y z, x y z w or x y z r g b)");
+  EXPECT_EQ(error_of("v 0 0 0 w\n"), "mesh.obj:1: coordinate 'w' is not a number");
+  EXPECT_EQ(error_of("v 0 0 0 0.5 0.5 inf\n"), "mesh.obj:1: coordinate 'inf' is not finite (NaN or infinity)");
+  EXPECT_EQ(error_of("vn 0 1\n"), "mesh.obj:1: normal with 2 numbers (expected 3)");
+  EXPECT_EQ(error_of("vt 0 1 2 3\n"), "mesh.obj:1: texture vertex with 4 numbers (expected 1 to 3)");
+  EXPECT_EQ(error_of("vt 0.5 x\n"), "mesh.obj:1: coordinate 'x' is not a number");
+  EXPECT_EQ(error_of("vp nan\n"), "mesh.obj:1: coordinate 'nan' is not finite (NaN or infinity)");
+  EXPECT_EQ(error_of(three + "l 1\n"), "mesh.obj:4: line with 1 vertices (expected at least 2)");
+  EXPECT_EQ(error_of(three + "p x\n"), "mesh.obj:4: face vertex 'x' does not start with an integer index");
+  for (const char* bad : {"1/", "1/x", "1/0", "1//", "1//0", "1/2/", "1/2/x", "1/2/3/4"})
+    EXPECT_EQ(error_of(three + "f " + bad + " 2 3\n"),
+              std::string("mesh.obj:4: face vertex '") + bad +
+                  "' is malformed (expected i, i/t, i//n or i/t/n, nonzero integers)")
+        << bad;
+  // The accepted forms.
+  EXPECT_EQ(error_of(three + "f 1/1 2//2 3/3/3\nl 1 2 3\np 1\no x\ng a b\ns off\nmtllib m.mtl\nusemtl red\n"
+                             "vt 0.5\nvt 0.5 0.5 0\nvn 0 0 1\nvp 0.5 0.5\nv 1 2 3 1\nv 1 2 3 0.5 0.5 0.5\n"),
+            "");
+}
+
+TEST(Obj, ByteOrderMarkLosesNoLine) {
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const ObjMesh with = parse("\xEF\xBB\xBF" + text), without = parse(text);
+  EXPECT_EQ(with.vertices.size(), 3u);
+  EXPECT_EQ(with.triangles, without.triangles);
+  EXPECT_EQ(error_of("\xEF\xBB\xBFv 0 0\n"), "mesh.obj:1: vertex with 2 coordinates (expected x y z)");
+}
+
 }  // namespace
 }  // namespace exactccd::io

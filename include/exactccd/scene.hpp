@@ -38,8 +38,9 @@ struct Scene {
 
 /// Options of the scene functions.
 struct SceneOptions {
-  /// Threads of the narrow phase; 0 means std::thread::hardware_concurrency(). The results do
-  /// not depend on it.
+  /// Threads of the narrow phase; 0 means std::thread::hardware_concurrency(); at most 1024
+  /// are used, and fewer when the system refuses to start more. The results do not depend
+  /// on it.
   unsigned threads = 0;
 };
 

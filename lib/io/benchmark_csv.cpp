@@ -17,23 +17,39 @@ std::string trim(const std::string& s) {
   return s.substr(first, last - first + 1);
 }
 
-/// A base-10 integer with an optional sign and nothing else.
-bool parse_integer(const std::string& field, mpz_class& out) {
+/// Why a field is not accepted as an integer.
+enum class FieldError { none, not_an_integer, too_large };
+
+/// A base-10 integer with an optional sign and nothing else, of at most kMaxFieldBits bits.
+/// Too many digits are refused before any conversion (converting 10^5 digits alone is slow).
+FieldError parse_integer(const std::string& field, mpz_class& out) {
   const std::string s = trim(field);
-  if (s.empty()) return false;
+  if (s.empty()) return FieldError::not_an_integer;
   std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
-  if (i == s.size()) return false;
+  if (i == s.size()) return FieldError::not_an_integer;
   for (std::size_t j = i; j < s.size(); ++j)
-    if (s[j] < '0' || s[j] > '9') return false;
-  return out.set_str(s[0] == '+' ? s.substr(1) : s, 10) == 0;
+    if (s[j] < '0' || s[j] > '9') return FieldError::not_an_integer;
+  // 2^kMaxFieldBits has floor(kMaxFieldBits log10 2) + 1 = 1234 digits: more significant
+  // digits than that is surely too large.
+  constexpr std::size_t kMaxDigits = kMaxFieldBits * 30103 / 100000 + 1;
+  const std::size_t first_significant = std::min(s.find_first_not_of('0', i), s.size());
+  if (s.size() - first_significant > kMaxDigits) return FieldError::too_large;
+  if (out.set_str(s[0] == '+' ? s.substr(1) : s, 10) != 0) return FieldError::not_an_integer;
+  if (out != 0 && mpz_sizeinbase(out.get_mpz_t(), 2) > kMaxFieldBits) return FieldError::too_large;
+  return FieldError::none;
+}
+
+/// The number of decimal digits of an integer field (without sign, spaces and leading zeros).
+std::size_t significant_digits(const std::string& field) {
+  const std::string s = trim(field);
+  const std::size_t from = s.find_first_not_of("+-0");
+  return from == std::string::npos ? 0 : s.size() - from;
 }
 
 }  // namespace
 
 ParseError::ParseError(const std::string& source, std::size_t line, const std::string& what)
-    : std::runtime_error(source + ":" + std::to_string(line) + ": " + what),
-      source_(source),
-      line_(line) {}
+    : InputError(source, source + ":" + std::to_string(line) + ": " + what, true), line_(line) {}
 
 BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name) {
   BenchmarkQueries result;
@@ -41,6 +57,8 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
   int row_in_query = 0;
   bool query_truth = false;
   std::size_t line_number = 0, query_first_line = 0, last_row_line = 0;
+  std::array<std::size_t, 8> current_lines{};
+  skip_byte_order_mark(in);
   std::string line;
   while (std::getline(in, line)) {
     ++line_number;
@@ -55,10 +73,17 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
                        "expected 7 comma-separated integers, found " + std::to_string(fields.size()) +
                            " fields");
     std::array<mpz_class, 7> v;
-    for (int i = 0; i < 7; ++i)
-      if (!parse_integer(fields[i], v[i]))
+    for (int i = 0; i < 7; ++i) {
+      const FieldError error = parse_integer(fields[i], v[i]);
+      if (error == FieldError::not_an_integer)
         throw ParseError(source_name, line_number,
                          "field " + std::to_string(i + 1) + " is not an integer: '" + trim(fields[i]) + "'");
+      if (error == FieldError::too_large)
+        throw ParseError(source_name, line_number,
+                         "field " + std::to_string(i + 1) + " has " + std::to_string(significant_digits(fields[i])) +
+                             " digits, more than the limit of " + std::to_string(kMaxFieldBits) +
+                             " bits per numerator or denominator (README, \"Input files\")");
+    }
     std::array<mpq_class, 3> coordinate;
     for (int c = 0; c < 3; ++c) {
       if (v[2 * c + 1] == 0)
@@ -78,9 +103,11 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
                            std::to_string(query_first_line) + ")");
     }
     current[row_in_query] = {coordinate[0], coordinate[1], coordinate[2]};
+    current_lines[row_in_query] = line_number;
     if (++row_in_query == 8) {
       result.rows.push_back(current);
       result.truth.push_back(query_truth);
+      result.lines.push_back(current_lines);
       row_in_query = 0;
     }
   }

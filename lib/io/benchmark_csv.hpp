@@ -12,38 +12,49 @@
 #include <vector>
 
 #include "exactccd/types.hpp"
+#include "io/input_file.hpp"  // InputError
 
 namespace exactccd::io {
 
 /// A malformed input: what is wrong, where (source name and 1-based line). what() is
 /// "<source>:<line>: <reason>".
-class ParseError : public std::runtime_error {
+class ParseError : public InputError {
  public:
   /// An error in `source` at 1-based `line`; `what` is the reason.
   ParseError(const std::string& source, std::size_t line, const std::string& what);
-  /// The source name given to the reader (usually the file path).
-  const std::string& source() const { return source_; }
   /// The 1-based line of the error.
   std::size_t line() const { return line_; }
 
  private:
-  std::string source_;
   std::size_t line_;
 };
+
+/// The largest numerator or denominator read_benchmark_csv accepts, in bits (1233 decimal
+/// digits). Every double fits with room to spare (its numerator has at most 1024 bits, its
+/// denominator at most 1075). The bound caps the cost of the exact path, which grows with the
+/// size of the rationals (a 10^5-digit coordinate ran for more than 15 minutes; at this limit
+/// the worst query measured takes seconds and a few hundred MB, at 8192 bits four times
+/// that): README, "Input files", gives the measured figures and the command.
+constexpr std::size_t kMaxFieldBits = 4096;
 
 /// Queries of one benchmark file: rows[i] are query i's eight points in row order, truth[i]
 /// its published ground truth.
 struct BenchmarkQueries {
   std::vector<std::array<RationalVec3, 8>> rows;  ///< eight points per query, in row order
   std::vector<bool> truth;                        ///< the truth column, one per query
+  /// The 1-based line of each row, per query (filled by read_benchmark_csv; empty for queries
+  /// built in memory).
+  std::vector<std::array<std::size_t, 8>> lines;
   /// The number of queries.
   std::size_t size() const { return rows.size(); }
 };
 
 /// Parses a benchmark CSV. Throws ParseError naming source_name and the line on: a wrong
-/// number of columns, a non-integer field, a zero denominator, a truth other than 0/1 or not
-/// repeated on all 8 rows of a query, or a row count that is not a multiple of 8. Rationals
-/// are canonicalized. Tolerates CR line ends, spaces around fields and blank lines.
+/// number of columns, a non-integer field, an integer of more than kMaxFieldBits bits, a zero
+/// denominator, a truth other than 0/1 or not repeated on all 8 rows of a query, or a row
+/// count that is not a multiple of 8. Rationals are canonicalized. Tolerates CR line ends,
+/// spaces around fields, blank lines and a UTF-8 byte order mark at the start. An input
+/// without rows gives no queries (callers reading a file reject that: README, "Input files").
 BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name);
 
 /// Writes queries in the benchmark format, each rational as its exact canonical

@@ -35,15 +35,60 @@ double parse_coordinate(const std::string& token, const std::string& source, std
   return value;
 }
 
-/// A face vertex reference `i`, `i/t`, `i//n` or `i/t/n`: its index i (1-based or negative).
+/// A whole token as a long, or false.
+bool parse_long(const std::string& s, long& value) {
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+  return !s.empty() && error == std::errc() && end == s.data() + s.size();
+}
+
+/// A face vertex reference `i`, `i/t`, `i//n` or `i/t/n`: its index i (1-based or negative);
+/// t and n, when present, must be nonzero integers too.
 long parse_reference(const std::string& token, const std::string& source, std::size_t line) {
   const std::string index = token.substr(0, token.find('/'));
   long value = 0;
-  const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), value);
-  if (index.empty() || error != std::errc() || end != index.data() + index.size())
+  if (!parse_long(index, value))
     throw ParseError(source, line, "face vertex '" + token + "' does not start with an integer index");
   if (value == 0) throw ParseError(source, line, "face vertex index 0 (OBJ indices start at 1)");
+  if (index.size() < token.size()) {  // "/t", "//n", "/t/n"
+    const std::string rest = token.substr(index.size() + 1);
+    const auto slash = rest.find('/');
+    const std::string texture = rest.substr(0, slash);
+    const std::string normal = slash == std::string::npos ? "" : rest.substr(slash + 1);
+    long t = 0, n = 0;
+    const bool texture_ok = texture.empty() ? slash != std::string::npos : parse_long(texture, t) && t != 0;
+    const bool normal_ok = slash == std::string::npos || (parse_long(normal, n) && n != 0);
+    if (!texture_ok || !normal_ok)
+      throw ParseError(source, line,
+                       "face vertex '" + token + "' is malformed (expected i, i/t, i//n or i/t/n, nonzero integers)");
+  }
   return value;
+}
+
+/// Checks that tokens t[1..] are between `least` and `most` finite numbers; `what` names them.
+void check_numbers(const std::vector<std::string>& t, std::size_t least, std::size_t most, const char* what,
+                   const std::string& source, std::size_t line) {
+  const std::size_t count = t.size() - 1;
+  if (count < least || count > most)
+    throw ParseError(source, line,
+                     std::string(what) + " with " + std::to_string(count) + " numbers (expected " +
+                         std::to_string(least) + (least == most ? "" : " to " + std::to_string(most)) + ")");
+  for (std::size_t i = 1; i < t.size(); ++i) parse_coordinate(t[i], source, line);
+}
+
+/// The OBJ statements of free-form geometry (curves and surfaces): not read, so an error
+/// rather than a mesh silently missing them.
+bool is_free_form_statement(const std::string& keyword) {
+  for (const char* k : {"cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole",
+                        "scrv", "sp", "end", "con"})
+    if (keyword == k) return true;
+  return false;
+}
+
+/// Statements read or harmlessly ignored: their arguments do not change the mesh.
+bool is_ignored_statement(const std::string& keyword) {
+  for (const char* k : {"o", "g", "s", "mtllib", "usemtl"})
+    if (keyword == k) return true;
+  return false;
 }
 
 /// A face as read: 0-based indices (positive references not yet checked against the count).
@@ -58,6 +103,7 @@ ObjMesh read_obj(std::istream& in, const std::string& source_name) {
   ObjMesh mesh;
   std::vector<Face> faces;
   std::size_t line_number = 0;
+  skip_byte_order_mark(in);
   for (std::string line; std::getline(in, line);) {
     ++line_number;
     const std::vector<std::string> t = tokens(line);
@@ -66,12 +112,37 @@ ObjMesh read_obj(std::istream& in, const std::string& source_name) {
       if (t.size() < 4)
         throw ParseError(source_name, line_number,
                          "vertex with " + std::to_string(t.size() - 1) + " coordinates (expected x y z)");
+      if (t.size() != 4 && t.size() != 5 && t.size() != 7)
+        throw ParseError(source_name, line_number,
+                         "vertex with " + std::to_string(t.size() - 1) +
+                             " numbers (expected x y z, x y z w or x y z r g b)");
       if (mesh.vertices.size() >= static_cast<std::size_t>(INT_MAX))
         throw ParseError(source_name, line_number, "more than INT_MAX vertices");
+      for (std::size_t i = 4; i < t.size(); ++i) parse_coordinate(t[i], source_name, line_number);
       mesh.vertices.push_back({parse_coordinate(t[1], source_name, line_number),
                                parse_coordinate(t[2], source_name, line_number),
                                parse_coordinate(t[3], source_name, line_number)});
-    } else if (t[0] == "f") {
+    } else if (t[0] == "vt" || t[0] == "vp") {
+      check_numbers(t, 1, 3, t[0] == "vt" ? "texture vertex" : "parameter vertex", source_name, line_number);
+    } else if (t[0] == "vn") {
+      check_numbers(t, 3, 3, "normal", source_name, line_number);
+    } else if (t[0] == "l" || t[0] == "p") {
+      const std::size_t least = t[0] == "l" ? 2 : 1;
+      if (t.size() - 1 < least)
+        throw ParseError(source_name, line_number,
+                         std::string(t[0] == "l" ? "line" : "point") + " with " + std::to_string(t.size() - 1) +
+                             " vertices (expected at least " + std::to_string(least) + ")");
+      for (std::size_t i = 1; i < t.size(); ++i) parse_reference(t[i], source_name, line_number);
+    } else if (is_ignored_statement(t[0])) {
+      continue;
+    } else if (is_free_form_statement(t[0])) {
+      throw ParseError(source_name, line_number,
+                       "OBJ free-form geometry ('" + t[0] + "') is not supported (triangle and polygon faces only)");
+    } else if (t[0] != "f") {
+      throw ParseError(source_name, line_number,
+                       "unknown OBJ keyword '" + t[0] +
+                           "' (expected v, vt, vn, vp, f, l, p, o, g, s, mtllib, usemtl or a # comment)");
+    } else {
       if (t.size() < 4)
         throw ParseError(source_name, line_number,
                          "face with " + std::to_string(t.size() - 1) + " vertices (expected at least 3)");

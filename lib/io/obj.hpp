@@ -19,16 +19,19 @@ struct ObjMesh {
   std::vector<std::array<int, 3>> triangles;   ///< 0-based indices, polygons fan-triangulated
 };
 
-/// Parses an OBJ mesh. Reads `v x y z` lines (further numbers on the line, such as w or a
-/// colour, are ignored) and `f` lines of at least three vertex references, each `i`, `i/t`,
-/// `i//n` or `i/t/n` with i a 1-based index or a negative index relative to the vertices read
-/// so far (-1 is the last one); a polygon (v0, v1, ..., vk) becomes the fan (v0, v1, v2),
-/// (v0, v2, v3), .... Every other line (comments after `#`, vn, vt, o, g, s, usemtl, l, p, ...)
-/// is ignored. Coordinates are read exactly as the nearest doubles (std::from_chars). Throws
-/// ParseError naming source_name and the line on: a malformed or non-finite coordinate, fewer
-/// than three coordinates or face vertices, an index that is zero, not an integer or refers
-/// to no vertex (checked at the end of the file for positive indices, which may refer
-/// forward), or a face that repeats a vertex (a degenerate face).
+/// Parses an OBJ mesh, strictly. Reads `v x y z` lines (a w, or an r g b colour, may follow:
+/// checked as numbers, then ignored) and `f` lines of at least three vertex references, each
+/// `i`, `i/t`, `i//n` or `i/t/n` with i a 1-based index or a negative index relative to the
+/// vertices read so far (-1 is the last one); a polygon (v0, v1, ..., vk) becomes the fan
+/// (v0, v1, v2), (v0, v2, v3), .... The other standard statements are checked and ignored:
+/// vt, vn, vp (finite numbers), l and p (vertex references), o, g, s, mtllib, usemtl, and
+/// comments after `#`. A UTF-8 byte order mark at the start is skipped. Coordinates are read
+/// exactly as the nearest doubles (std::from_chars). Throws ParseError naming source_name and
+/// the line on: any other keyword (free-form geometry included: it would be lost silently),
+/// a malformed or non-finite number, a wrong count of coordinates or face vertices, an index
+/// that is zero, not an integer or refers to no vertex (checked at the end of the file for
+/// positive indices, which may refer forward), or a face that repeats a vertex (a degenerate
+/// face). An input without vertices gives an empty mesh (io::read_mesh rejects that).
 ObjMesh read_obj(std::istream& in, const std::string& source_name);
 
 /// Writes vertices and triangles as OBJ (`v` lines with the shortest decimal that reads back as

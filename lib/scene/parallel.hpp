@@ -15,10 +15,13 @@
 
 namespace exactccd::scene {
 
-/// The number of threads to use for `requested` (0: every hardware thread), at least 1.
+/// The most threads a scene function uses (SceneOptions::threads is capped there).
+constexpr unsigned kMaxThreads = 1024;
+
+/// The number of threads to use for `requested` (0: every hardware thread), in 1..kMaxThreads.
 inline unsigned resolve_threads(unsigned requested) {
   if (requested == 0) requested = std::thread::hardware_concurrency();
-  return std::max(1u, requested);
+  return std::clamp(requested, 1u, kMaxThreads);
 }
 
 /// Calls body(begin, end, worker) over chunks [begin, end) of [0, n) of at most `chunk`
@@ -27,7 +30,9 @@ inline unsigned resolve_threads(unsigned requested) {
 /// whichever worker is free, so which worker runs which chunk is not deterministic: callers
 /// merge per-worker outputs in an order of their own. body returns false to stop every worker
 /// early (chunks already started finish). The first exception thrown by body stops the loop
-/// and is rethrown here. Returns the number of workers used.
+/// and is rethrown here. When the system refuses a thread (std::system_error: a thread limit,
+/// no memory for its stack), the workers started do all the chunks: same results, fewer
+/// threads. Returns the number of workers that ran.
 template <class Body>
 unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Body&& body) {
   chunk = std::max<std::size_t>(1, chunk);
@@ -57,14 +62,14 @@ unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Bod
   for (unsigned w = 1; w < workers; ++w) {
     try {
       pool.emplace_back(work, w);
-    } catch (const std::system_error&) {  // no more threads: the ones running do all the work
+    } catch (const std::exception&) {  // no more threads (system_error, bad_alloc): the ones running do it all
       break;
     }
   }
   work(0);
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
-  return workers;
+  return static_cast<unsigned>(pool.size() + 1);
 }
 
 }  // namespace exactccd::scene

@@ -2,12 +2,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <iostream>
-#include <sstream>
 #include <vector>
 
 #include "cli_common.hpp"
+#include "output_file.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -15,30 +15,40 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kHelp = R"(usage: exactccd bench [options] [FILE.csv...]
+/// The most repetitions: a bound on the run time, not on anything's size.
+constexpr long long kMaxRepetitions = 100000;
 
-Runs every method on the same loaded queries and reports, per dataset and method: mean and
-median time per query in ns, false positives and false negatives against the exact answer,
-the queries that reached the exact CGAL fallback, and the share decided by each filter stage.
-
-Without files it runs the bundled datasets: the shared benchmark's unit-tests (when present)
-and the simulation-like sets under data/sim (dataset names starting with "sim").
-Each file given is one dataset.
-
-Timing: each repetition times the whole dataset for each method in turn (methods interleaved
-within a repetition, so drift affects them alike); time per query = elapsed / queries.
-mean_ns and median_ns are the mean and median of that figure over the repetitions.
-
-options:
-  --kind vf|ee         query kind of the files (default: inferred from the path)
-  --repetitions N      repetitions per dataset and method (default 5)
-  --methods LIST       comma-separated methods (default naive,filtered,exact), or "all": naive,
-                       naive-tolerance, mpfr24, mpfr53, mpfr113, mpfr256, filtered, exact
-  --json FILE          also write the results as a JSON array ('-' for stdout; the table then
-                       goes to stderr)
-  -h, --help           this help
-exit codes: 0 ran, 2 bad usage or malformed input, 1 internal error.
-)";
+const CommandSpec& command() {
+  static const CommandSpec spec = [] {
+    CommandSpec c;
+    c.name = "bench";
+    c.usage = "usage: exactccd bench [options] [FILE.csv...]";
+    c.description =
+        "Runs every method on the same loaded queries and reports, per dataset and method: mean and\n"
+        "median time per query in ns, false positives and false negatives against the exact answer,\n"
+        "the queries that reached the exact CGAL fallback, and the share decided by each filter stage.\n"
+        "\n"
+        "Without files it runs the bundled datasets: the shared benchmark's unit-tests (when present)\n"
+        "and the simulation-like sets under data/sim (dataset names starting with \"sim\").\n"
+        "Each file given is one dataset.\n"
+        "\n"
+        "Timing: each repetition times the whole dataset for each method in turn (methods interleaved\n"
+        "within a repetition, so drift affects them alike); time per query = elapsed / queries.\n"
+        "mean_ns and median_ns are the mean and median of that figure over the repetitions.\n";
+    c.options = {
+        kind_option("query kind of the files (default: inferred from the path)"),
+        integer_option("--repetitions", "N", 1, kMaxRepetitions, "5", "repetitions per dataset and method"),
+        choice_list_option("--methods", "LIST", all_method_names(), "naive,filtered,exact",
+                           "the methods to run"),
+        text_option("--json", "FILE", "",
+                    "also write the results as a JSON array ('-' for stdout; the table then\n"
+                    "goes to stderr); written to a temporary renamed when complete"),
+    };
+    c.epilogue = "exit codes: 0 ran, 2 bad usage or malformed input, 1 internal error.\n";
+    return c;
+  }();
+  return spec;
+}
 
 struct Result {
   std::string dataset, kind, method;
@@ -47,15 +57,6 @@ struct Result {
   StageCounters stages;
   std::uint64_t exact_fallbacks = 0;
 };
-
-std::vector<Method> parse_methods(const std::string& list) {
-  if (list == "all") return all_methods();
-  std::vector<Method> out;
-  std::stringstream ss(list);
-  for (std::string m; std::getline(ss, m, ',');) out.push_back(parse_method(m));
-  if (out.empty()) throw UsageError("bench: --methods is empty");
-  return out;
-}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -108,31 +109,20 @@ void write_json(std::ostream& out, const std::vector<Result>& results) {
 }  // namespace
 
 int run_bench(int argc, char** argv) {
-  std::optional<QueryKind> kind;
-  int repetitions = 5;
-  std::vector<Method> methods = {Method::naive, Method::filtered, Method::exact};
-  std::string json;
-  std::vector<std::string> files;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      std::cout << kHelp;
-      return kExitOk;
-    } else if (a == "--kind") {
-      kind = parse_kind(option_value(argc, argv, i));
-    } else if (a == "--repetitions") {
-      repetitions = std::stoi(option_value(argc, argv, i));
-      if (repetitions < 1) throw UsageError("bench: --repetitions must be >= 1");
-    } else if (a == "--methods") {
-      methods = parse_methods(option_value(argc, argv, i));
-    } else if (a == "--json") {
-      json = option_value(argc, argv, i);
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("bench: unknown option '" + a + "' (see exactccd bench --help)");
-    } else {
-      files.push_back(a);
-    }
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
   }
+  const std::optional<QueryKind> kind = kind_of(options);
+  const int repetitions = static_cast<int>(options.integer("--repetitions"));
+  std::vector<Method> methods;
+  for (const std::string& m : options.list("--methods")) methods.push_back(parse_method(m));
+  const std::string json = options.has("--json") ? options.text("--json") : "";
+  std::vector<std::string> files = options.positionals();
+  // An unwritable --json FILE fails now, not after the whole run.
+  std::optional<AtomicOutputFile> json_file;
+  if (!json.empty() && json != "-") json_file.emplace(json);
   if (files.empty()) files = bundled_files();
   if (files.empty()) throw UsageError("bench: no dataset given and no bundled dataset found");
 
@@ -140,6 +130,7 @@ int run_bench(int argc, char** argv) {
   for (const std::string& f : files) {
     datasets.push_back(load_dataset(f, kind));
     datasets.back().name = dataset_name(f);
+    for (Method m : methods) require_double_range(datasets.back(), m);
   }
 
   FILE* table = json == "-" ? stderr : stdout;
@@ -203,9 +194,8 @@ int run_bench(int argc, char** argv) {
     if (json == "-") {
       write_json(std::cout, results);
     } else {
-      std::ofstream out(json);
-      if (!out) throw UsageError("bench: cannot write '" + json + "'");
-      write_json(out, results);
+      write_json(json_file->stream(), results);
+      json_file->commit();
     }
   }
   return kExitOk;

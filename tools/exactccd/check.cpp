@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "cli_common.hpp"
@@ -10,27 +11,37 @@
 namespace exactccd::cli {
 namespace {
 
-constexpr const char* kHelp = R"(usage: exactccd check [options] FILE.csv...
-
-Answers every query of benchmark CSV files (Wang et al. 2021 format: 8 rows per query,
-x_num,x_den,y_num,y_den,z_num,z_den,truth) and compares with the truth column.
-
-options:
-  --kind vf|ee        query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)
-  --method NAME       filtered (default; exact), exact (CGAL reference; slow); baselines, NOT
-                      robust: naive (textbook doubles), naive-tolerance (Bridson-style
-                      tolerance), mpfr24, mpfr53, mpfr113, mpfr256 (textbook in MPFR)
-  --answers           print only one line per query, 0 or 1, in file order
-  --stats             also print how many queries each stage of the filtered method decided
-  --json              print a JSON array instead of the table: one object per file with keys
-                      file, kind, method, queries, positives, fp, fn, us_per_query, stages
-%s  -h, --help          this help
-
-output: per file, queries, truth positives, false positives, false negatives and the mean time
-per query (wall-clock time / queries, so with --threads it is the throughput); then the totals.
-exit codes: 0 ran (whatever it found), 2 bad usage or malformed input (file:line on stderr),
-1 internal error.
-)";
+const CommandSpec& command() {
+  static const CommandSpec spec = [] {
+    CommandSpec c;
+    c.name = "check";
+    c.usage = "usage: exactccd check [options] FILE.csv...";
+    c.description =
+        "Answers every query of benchmark CSV files (Wang et al. 2021 format: 8 rows per query,\n"
+        "x_num,x_den,y_num,y_den,z_num,z_den,truth) and compares with the truth column.\n";
+    c.options = {
+        kind_option("query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)"),
+        choice_option("--method", "NAME", all_method_names(), "filtered",
+                      "filtered (exact), exact (CGAL reference; slow); baselines, NOT robust:\n"
+                      "naive (textbook doubles), naive-tolerance (Bridson-style tolerance),\n"
+                      "mpfr24, mpfr53, mpfr113, mpfr256 (textbook in MPFR)"),
+        flag_option("--answers", "print only one line per query, 0 or 1, in file order"),
+        flag_option("--stats", "also print how many queries each stage of the filtered method decided"),
+        flag_option("--json", "print a JSON array instead of the table: one object per file with keys\n"
+                              "file, kind, method, queries, positives, fp, fn, us_per_query, stages"),
+    };
+    for (OptionSpec& o : batch_option_specs()) c.options.push_back(o);
+    c.epilogue =
+        "\noutput: per file, queries, truth positives, false positives, false negatives and the mean time\n"
+        "per query (wall-clock time / queries, so with --threads it is the throughput); then the totals.\n"
+        "input: README, \"Input files\" (empty files, numerators or denominators over 4096 bits and,\n"
+        "for the baselines, coordinates beyond the double range are errors).\n"
+        "exit codes: 0 ran (whatever it found), 2 bad usage or malformed input (file:line on stderr),\n"
+        "1 internal error.\n";
+    return c;
+  }();
+  return spec;
+}
 
 struct Totals {
   std::size_t queries = 0, positives = 0, fp = 0, fn = 0;
@@ -40,40 +51,25 @@ struct Totals {
 }  // namespace
 
 int run_check(int argc, char** argv) {
-  std::optional<QueryKind> kind;
-  Method method = Method::filtered;
-  bool answers = false, stats = false, json = false;
-  BatchOptions batch;
-  std::vector<std::string> files;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      std::printf(kHelp, kBatchOptionsHelp);
-      return kExitOk;
-    } else if (batch.parse(argc, argv, i)) {
-      continue;
-    } else if (a == "--kind") {
-      kind = parse_kind(option_value(argc, argv, i));
-    } else if (a == "--method") {
-      method = parse_method(option_value(argc, argv, i));
-    } else if (a == "--answers") {
-      answers = true;
-    } else if (a == "--stats") {
-      stats = true;
-    } else if (a == "--json") {
-      json = true;
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("check: unknown option '" + a + "' (see exactccd check --help)");
-    } else {
-      files.push_back(a);
-    }
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
   }
+  const std::optional<QueryKind> kind = kind_of(options);
+  const Method method = parse_method(options.text("--method"));
+  const bool answers = options.flag("--answers"), stats = options.flag("--stats"), json = options.flag("--json");
+  const BatchOptions batch = batch_options(options);
+  const std::vector<std::string>& files = options.positionals();
   if (files.empty()) throw UsageError("check: no input file (see exactccd check --help)");
   if (json && answers) throw UsageError("check: --json and --answers exclude each other");
 
   // Parse everything first: a malformed file fails before anything is printed.
   std::vector<Dataset> datasets;
-  for (const std::string& f : files) datasets.push_back(load_dataset(f, kind));
+  for (const std::string& f : files) {
+    datasets.push_back(load_dataset(f, kind));
+    require_double_range(datasets.back(), method);
+  }
 
   std::size_t all_queries = 0;
   for (const Dataset& d : datasets) all_queries += d.queries.size();

@@ -2,12 +2,17 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <exception>
-#include <fstream>
 #include <mutex>
+#include <system_error>
 #include <thread>
+#include <tuple>
+
+#include "io/input_file.hpp"
 
 namespace exactccd::cli {
 
@@ -15,6 +20,15 @@ QueryKind parse_kind(const std::string& s) {
   if (s == "vf" || s == "vertex-face") return QueryKind::vertex_face;
   if (s == "ee" || s == "edge-edge") return QueryKind::edge_edge;
   throw UsageError("unknown kind '" + s + "' (expected vf or ee)");
+}
+
+OptionSpec kind_option(const std::string& help) {
+  return choice_option("--kind", "vf|ee", {"vf", "ee", "vertex-face", "edge-edge"}, "", help);
+}
+
+std::optional<QueryKind> kind_of(const ParsedOptions& options) {
+  if (!options.has("--kind")) return std::nullopt;
+  return parse_kind(options.text("--kind"));
 }
 
 std::string kind_name(QueryKind k) { return k == QueryKind::vertex_face ? "vf" : "ee"; }
@@ -48,6 +62,12 @@ std::string method_name(Method m) {
   return "?";
 }
 
+std::vector<std::string> all_method_names() {
+  std::vector<std::string> names;
+  for (Method m : all_methods()) names.push_back(method_name(m));
+  return names;
+}
+
 Method parse_method(const std::string& s) {
   for (Method m : all_methods())
     if (method_name(m) == s) return m;
@@ -60,16 +80,35 @@ Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
   if (!kind)
     throw UsageError("cannot infer the query kind of '" + path +
                      "' (no 'vertex-face' or 'edge-edge' in the path): pass --kind vf|ee");
-  std::ifstream in(path);
-  if (!in) throw UsageError("cannot open '" + path + "'");
+  io::InputFile file(path);
   Dataset d;
   d.path = path;
   d.name = path;
   d.kind = *kind;
-  d.queries = io::read_benchmark_csv(in, path);
+  d.queries = io::read_benchmark_csv(file.stream(), path);
+  file.check_read();
+  if (d.queries.size() == 0) throw io::InputError(path, "no queries (an empty benchmark file)");
   d.doubles.reserve(d.queries.size());
   for (const auto& rows : d.queries.rows) d.doubles.push_back(io::exact_double_rows(rows));
   return d;
+}
+
+void require_double_range(const Dataset& d, Method method) {
+  if (is_exact_method(method)) return;
+  for (std::size_t i = 0; i < d.queries.size(); ++i) {
+    if (d.doubles[i]) continue;  // exact doubles: finite
+    for (std::size_t row = 0; row < 8; ++row) {
+      const RationalVec3& p = d.queries.rows[i][row];
+      for (const mpq_class* c : {&p.x, &p.y, &p.z}) {
+        if (std::isfinite(io::nearest_double(*c))) continue;
+        const std::size_t line = d.queries.lines.empty() ? 0 : d.queries.lines[i][row];
+        throw io::ParseError(d.path, line,
+                             "a coordinate rounds beyond the largest double (DBL_MAX); the baseline method " +
+                                 method_name(method) +
+                                 " works in doubles and cannot take it (the filtered and exact methods can)");
+      }
+    }
+  }
 }
 
 namespace {
@@ -105,42 +144,31 @@ std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method me
   return want_toi ? edge_edge_toi(q, method, c) : collides_placeholder(edge_edge_ccd(q, method, c));
 }
 
-bool BatchOptions::parse(int argc, char** argv, int& i) {
-  const std::string a = argv[i];
-  if (a == "--threads") {
-    const std::string v = option_value(argc, argv, i);
-    try {
-      const int n = std::stoi(v);
-      if (n < 1) throw std::invalid_argument(v);
-      threads = static_cast<unsigned>(n);
-    } catch (const std::exception&) {
-      throw UsageError("--threads needs a positive integer, not '" + v + "'");
-    }
-    return true;
-  }
-  if (a == "--shard") {
-    const std::string v = option_value(argc, argv, i);
-    const auto slash = v.find('/');
-    try {
-      if (slash == std::string::npos) throw std::invalid_argument(v);
-      const long index = std::stol(v.substr(0, slash)), count = std::stol(v.substr(slash + 1));
-      if (count < 1 || index < 0 || index >= count) throw std::invalid_argument(v);
-      shard_index = static_cast<std::size_t>(index);
-      shard_count = static_cast<std::size_t>(count);
-    } catch (const std::exception&) {
-      throw UsageError("--shard needs I/N with 0 <= I < N, not '" + v + "'");
-    }
-    return true;
-  }
-  return false;
+OptionSpec threads_option(const std::string& default_value, const std::string& help) {
+  return integer_option("--threads", "N", 1, kMaxThreads, default_value, help);
+}
+
+std::vector<OptionSpec> batch_option_specs() {
+  return {threads_option("1", "answer queries on N threads (results identical to one thread)"),
+          shard_option("--shard", kMaxShards,
+                       "only the I-th of N contiguous blocks of all queries, for splitting a run\n"
+                       "across cluster jobs; concatenating the outputs of shards 0..N-1 gives\n"
+                       "the output of the whole run")};
+}
+
+BatchOptions batch_options(const ParsedOptions& options) {
+  BatchOptions b;
+  b.threads = static_cast<unsigned>(options.integer("--threads"));
+  std::tie(b.shard_index, b.shard_count) = options.shard("--shard");
+  return b;
 }
 
 std::pair<std::size_t, std::size_t> BatchOptions::shard_range(std::size_t total) const {
   return {total * shard_index / shard_count, total * (shard_index + 1) / shard_count};
 }
 
-void parallel_for(std::size_t begin, std::size_t end, unsigned threads,
-                  const std::function<void(std::size_t)>& task, const char* label) {
+unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
+                      const std::function<void(std::size_t)>& task, const char* label) {
   std::atomic<std::size_t> next{begin}, done{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
@@ -157,8 +185,19 @@ void parallel_for(std::size_t begin, std::size_t end, unsigned threads,
   const auto worker = [&] {
     for (std::size_t i; (i = next.fetch_add(1)) < end;) run_one(i);
   };
+  // No more threads than indices; when the system refuses one (std::system_error: a thread
+  // limit, no memory for its stack; std::bad_alloc for its state), the threads started so far
+  // do all the work.
+  const std::size_t wanted = std::min<std::size_t>(std::max(1u, threads), end > begin ? end - begin : 1);
   std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  pool.reserve(wanted - 1);
+  for (std::size_t t = 1; t < wanted; ++t) {
+    try {
+      pool.emplace_back(worker);
+    } catch (const std::exception&) {
+      break;
+    }
+  }
   // The calling thread works too, and draws the progress bar between queries.
   const bool tty = isatty(fileno(stderr)) != 0;
   const double start = now_seconds();
@@ -189,6 +228,7 @@ void parallel_for(std::size_t begin, std::size_t end, unsigned threads,
     std::fputc('\n', stderr);
   }
   if (failure) std::rethrow_exception(failure);
+  return static_cast<unsigned>(pool.size() + 1);
 }
 
 std::string json_string(const std::string& s) {
@@ -206,11 +246,6 @@ std::string json_string(const std::string& s) {
     }
   }
   return out + "\"";
-}
-
-std::string option_value(int argc, char** argv, int& i) {
-  if (i + 1 >= argc) throw UsageError(std::string("option ") + argv[i] + " needs a value");
-  return argv[++i];
 }
 
 }  // namespace exactccd::cli

@@ -12,6 +12,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "io/benchmark_csv.hpp"
+#include "options.hpp"
 
 namespace exactccd::cli {
 
@@ -31,6 +32,10 @@ enum class QueryKind { vertex_face, edge_edge };
 
 /// "vf" / "ee" (also "vertex-face" / "edge-edge").
 QueryKind parse_kind(const std::string& s);
+/// The `--kind vf|ee` option (also vertex-face, edge-edge), with the given help.
+OptionSpec kind_option(const std::string& help);
+/// The kind given by `--kind`, if any.
+std::optional<QueryKind> kind_of(const ParsedOptions& options);
 std::string kind_name(QueryKind k);  ///< "vf" or "ee"
 
 /// The kind named by a path containing "vertex-face" or "edge-edge", if any; when both occur,
@@ -42,6 +47,8 @@ std::optional<QueryKind> kind_from_path(const std::string& path);
 const std::vector<Method>& all_methods();
 Method parse_method(const std::string& s);
 std::string method_name(Method m);
+/// The names of all_methods(), in that order.
+std::vector<std::string> all_method_names();
 
 /// A loaded benchmark file.
 struct Dataset {
@@ -53,9 +60,16 @@ struct Dataset {
   std::vector<std::optional<std::array<Vec3, 8>>> doubles;
 };
 
-/// Reads and parses a benchmark CSV (throws UsageError on a missing file, io::ParseError on a
-/// malformed one). kind: explicit, or inferred from the path.
+/// Reads and parses a benchmark CSV. Throws UsageError when the kind is neither given nor in
+/// the path, io::InputError when the file is missing, a directory, unreadable or holds no
+/// query (an empty file is an error, never an empty answer), io::ParseError ("file:line:
+/// reason") when it is malformed. kind: explicit, or inferred from the path.
 Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind);
+
+/// Throws io::ParseError naming the file and the row's line when `method` works in doubles (a
+/// baseline) and a coordinate of d rounds beyond the largest double (the baseline cannot take
+/// the query; the exact methods can). No-op for the exact methods.
+void require_double_range(const Dataset& d, Method method);
 
 /// The answer of one method on query i: the TOI when it collides. Rational queries that are
 /// not exact doubles run the exact path (the baselines round them to the nearest doubles).
@@ -70,32 +84,37 @@ inline double now_seconds() {
 /// s as a JSON string literal (quotes, backslashes and control characters escaped).
 std::string json_string(const std::string& s);
 
-/// Value of option `--name VALUE` at argv[i] (advances i), or UsageError when missing.
-std::string option_value(int argc, char** argv, int& i);
+/// The largest --threads of any subcommand: a documented range (1..kMaxThreads), not a
+/// resource the run may fail to get (fewer threads are used when the system gives fewer).
+constexpr long long kMaxThreads = 1024;
+/// The largest N of --shard I/N.
+constexpr long long kMaxShards = 1000000;
+
+/// The `--threads N` option: 1..kMaxThreads, the given default ("" for none) and help.
+OptionSpec threads_option(const std::string& default_value, const std::string& help);
 
 /// Options shared by batch commands: `--threads N` and `--shard I/N`.
 struct BatchOptions {
   unsigned threads = 1;
   std::size_t shard_index = 0, shard_count = 1;
 
-  /// Consumes argv[i] (and its value) when it is a batch option; returns whether it was.
-  bool parse(int argc, char** argv, int& i);
-
   /// The half-open range of the global query indices [0, total) this shard owns: contiguous
   /// blocks, so that concatenating the outputs of shards 0..N-1 gives the whole run's output.
   std::pair<std::size_t, std::size_t> shard_range(std::size_t total) const;
 };
 
-/// Help text of the batch options.
-constexpr const char* kBatchOptionsHelp =
-    "  --threads N         answer queries on N threads (results identical to one thread)\n"
-    "  --shard I/N         only the I-th of N contiguous blocks of all queries (0 <= I < N), for\n"
-    "                      splitting a run across cluster jobs; concatenating the outputs of\n"
-    "                      shards 0..N-1 gives the output of the whole run\n";
+/// The option specs of the batch options (--threads, default 1, and --shard).
+std::vector<OptionSpec> batch_option_specs();
 
-/// Runs task(i) for i in [begin, end) on `threads` threads; shows a progress bar on stderr when
-/// stderr is a terminal and the run takes more than two seconds. Exceptions are rethrown.
-void parallel_for(std::size_t begin, std::size_t end, unsigned threads,
-                  const std::function<void(std::size_t)>& task, const char* label);
+/// The batch options given (defaults when absent).
+BatchOptions batch_options(const ParsedOptions& options);
+
+/// Runs task(i) for i in [begin, end) on up to `threads` threads (never more than there are
+/// indices; when the system refuses a thread, the ones started do the work: same results);
+/// shows a progress bar on stderr when stderr is a terminal and the run takes more than two
+/// seconds. Exceptions are rethrown. Returns the number of threads that worked (the calling
+/// thread included).
+unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
+                      const std::function<void(std::size_t)>& task, const char* label);
 
 }  // namespace exactccd::cli

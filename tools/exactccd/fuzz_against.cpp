@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <optional>
@@ -23,6 +22,7 @@
 #include "exactccd/plugin.h"
 #include "fuzz/families.hpp"
 #include "fuzz/fuzz_input.hpp"
+#include "output_file.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -31,9 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 using fuzzing::Rows;
 
-constexpr const char* kHelp = R"(usage: exactccd fuzz-against PLUGIN.so --kind vf|ee --out DIR [options]
-
-Tests another CCD code against the exact answers. PLUGIN.so is a shared library exporting
+constexpr const char* kDescription = R"(Tests another CCD code against the exact answers. PLUGIN.so is a shared library exporting
   int exactccd_plugin_vf(const double q[24])   (for --kind vf)
   int exactccd_plugin_ee(const double q[24])   (for --kind ee)
 (include/exactccd/plugin.h: the 8 points in benchmark row order, x y z each; 1 = collision,
@@ -63,16 +61,6 @@ unperturbed one); the .txt lists every k at which that placement disagrees. Othe
 each coordinate is simplified (0, its value at the other time, an integer, fewer significand
 bits) while the same disagreement persists.
 
-options:
-  --kind vf|ee        query kind (required)
-  --queries N         number of queries (default 10000)
-  --seed S            seed (default 1); a run is reproducible and independent of --threads
-  --out DIR           where to write the disagreements (required; created if missing)
-  --threads N         query on N threads (the plug-in must then be thread-safe; default 1)
-  --no-shrink         write the disagreements as found
-  -h, --help          this help
-exit codes: 0 ran (whatever it found), 2 bad usage or a plug-in that cannot be loaded or lacks
-the kind's symbol, 1 internal error.
 )";
 
 /// A loaded plug-in; unloaded on destruction.
@@ -315,15 +303,7 @@ void shrink(const Generated& q, Outcome& o, const Plugin& plugin, bool vertex_fa
 }
 
 /// Writes text to path through a temporary file and a rename: nothing is left half-written.
-void write_atomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) throw UsageError("fuzz-against: cannot write '" + tmp.string() + "'");
-  }
-  fs::rename(tmp, path);
-}
+void write_atomically(const fs::path& path, const std::string& text) { write_file_atomically(path.string(), text); }
 
 /// An earlier run's output of this kind: NNNNNN-*-<kind>.csv and disagreements-<kind>.*.
 bool is_output_of_kind(const std::string& name, const std::string& kind_suffix) {
@@ -336,63 +316,55 @@ bool is_output_of_kind(const std::string& name, const std::string& kind_suffix) 
          name[6] == '-';
 }
 
+/// The most queries of a run: each holds about half a kilobyte until the end (5 GB at the limit).
+constexpr long long kMaxFuzzQueries = 10000000;
+
+const CommandSpec& command() {
+  static const CommandSpec spec = [] {
+    CommandSpec c;
+    c.name = "fuzz-against";
+    c.usage = "usage: exactccd fuzz-against PLUGIN.so --kind vf|ee --out DIR [options]";
+    c.description = kDescription;
+    c.options = {
+        required(kind_option("query kind")),
+        integer_option("--queries", "N", 1, kMaxFuzzQueries, "10000", "number of queries"),
+        unsigned64_option("--seed", "S", "1", "seed; a run is reproducible and independent of --threads"),
+        required(text_option("--out", "DIR", "", "where to write the disagreements (created if missing)")),
+        threads_option("1", "query on N threads (the plug-in must then be thread-safe)"),
+        flag_option("--no-shrink", "write the disagreements as found"),
+    };
+    c.epilogue =
+        "exit codes: 0 ran (whatever it found), 2 bad usage, an unwritable DIR, or a plug-in that cannot\n"
+        "be loaded or lacks the kind's symbol, 1 internal error.\n";
+    return c;
+  }();
+  return spec;
+}
+
 }  // namespace
 
 int run_fuzz_against(int argc, char** argv) {
-  std::string plugin_path, out_dir;
-  std::optional<QueryKind> kind;
-  std::size_t queries = 10000;
-  std::uint64_t seed = 1;
-  unsigned threads = 1;
-  bool shrinking = true;
-  const auto number = [](const std::string& option, const std::string& v) {
-    try {
-      std::size_t used = 0;
-      const unsigned long long n = std::stoull(v, &used);
-      if (used != v.size() || v[0] == '-') throw std::invalid_argument(v);
-      return n;
-    } catch (const std::exception&) {
-      throw UsageError("fuzz-against: " + option + " needs a non-negative integer, not '" + v + "'");
-    }
-  };
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      std::cout << kHelp;
-      return kExitOk;
-    } else if (a == "--kind") {
-      kind = parse_kind(option_value(argc, argv, i));
-    } else if (a == "--queries") {
-      queries = number(a, option_value(argc, argv, i));
-    } else if (a == "--seed") {
-      seed = number(a, option_value(argc, argv, i));
-    } else if (a == "--out") {
-      out_dir = option_value(argc, argv, i);
-    } else if (a == "--threads") {
-      const auto n = number(a, option_value(argc, argv, i));
-      if (n < 1 || n > 1024) throw UsageError("fuzz-against: --threads needs 1..1024");
-      threads = static_cast<unsigned>(n);
-    } else if (a == "--no-shrink") {
-      shrinking = false;
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("fuzz-against: unknown option '" + a + "' (see exactccd fuzz-against --help)");
-    } else if (plugin_path.empty()) {
-      plugin_path = a;
-    } else {
-      throw UsageError("fuzz-against: one plug-in at a time ('" + plugin_path + "' and '" + a + "')");
-    }
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
   }
-  if (plugin_path.empty()) throw UsageError("fuzz-against: no plug-in (see exactccd fuzz-against --help)");
-  if (!kind) throw UsageError("fuzz-against: --kind vf|ee is required");
-  if (out_dir.empty()) throw UsageError("fuzz-against: --out DIR is required");
-  if (queries < 1) throw UsageError("fuzz-against: --queries must be at least 1");
+  const std::optional<QueryKind> kind = kind_of(options);
+  const auto queries = static_cast<std::size_t>(options.integer("--queries"));
+  const std::uint64_t seed = options.unsigned64("--seed");
+  const std::string out_dir = options.text("--out");
+  const auto threads = static_cast<unsigned>(options.integer("--threads"));
+  const bool shrinking = !options.flag("--no-shrink");
+  if (options.positionals().empty()) throw UsageError("fuzz-against: no plug-in (see exactccd fuzz-against --help)");
+  if (options.positionals().size() > 1)
+    throw UsageError("fuzz-against: one plug-in at a time ('" + options.positionals()[0] + "' and '" +
+                     options.positionals()[1] + "')");
+  const std::string plugin_path = options.positionals()[0];
 
   const Plugin plugin(plugin_path, *kind);
   const bool vf = *kind == QueryKind::vertex_face;
   const std::string kind_suffix = vf ? "vertex-face" : "edge-edge";
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (!fs::is_directory(out_dir)) throw UsageError("fuzz-against: cannot create directory '" + out_dir + "'");
+  prepare_output_directory(out_dir);
 
   const Groups groups = make_groups(vf);
   std::vector<Generated> generated(queries);

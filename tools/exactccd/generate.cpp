@@ -1,13 +1,13 @@
 // exactccd generate: writes the project's own query sets in the benchmark CSV format.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "cli_common.hpp"
 #include "fuzz/catalogue.hpp"
 #include "fuzz/families.hpp"
+#include "output_file.hpp"
 #include "scene/procedural_scenes.hpp"
 #include "scene/sim_queries.hpp"
 #include "subcommands.hpp"
@@ -17,46 +17,69 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kHelp = R"(usage: exactccd generate catalogue --out DIR
-       exactccd generate sim --scene cloth|strip|fold|pile [--resolution N] [--seed S]
-                             [--max-queries M] [--truth filtered|exact] --out DIR
-       exactccd generate families [--seed S] [--instances N] [--k-step K] --out DIR
-       exactccd generate scene --scene NAME [--resolution N] [--seed S] --out DIR
+/// The largest --resolution: a bound on the scenes' size (the pile at 1000 has 3 million bodies).
+constexpr long long kMaxResolution = 1000;
+/// The largest --max-queries.
+constexpr long long kMaxQueriesPerFile = 1000000000;
+/// The most family instances per direction and (family, k).
+constexpr long long kMaxFamilyInstances = 100000;
 
-Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).
-
-  catalogue   the hand-derived degenerate catalogue (fuzz/catalogue.cpp) with its scaled and
-              translated copies: DIR/catalogue-vertex-face.csv and DIR/catalogue-edge-edge.csv;
-              the truth column is the hand-derived answer
-  families    instances of every degenerate family (fuzz/families.hpp) for k = 0, K, 2K, ...
-              <= 60 and unperturbed, N per direction and (family, k) (default 1, K = 4):
-              DIR/families-vertex-face.csv and DIR/families-edge-edge.csv; the truth column is
-              the exact answer
-  scene       one time step of a procedural scene as two meshes, DIR/T0.obj (t = 0) and
-              DIR/T1.obj (t = 1), for exactccd scene
-  sim         simulation-like queries: the broad-phase candidates of one time step of a
-              procedural scene (lib/scene/procedural_scenes.hpp), written to
-              DIR/sim-<scene>-vertex-face.csv and DIR/sim-<scene>-edge-edge.csv; the truth
-              column is the exact answer, by the filtered method (exact, fast) unless
-              --truth exact
-
-options:
-  --out DIR           output directory (created if missing)
-  --scene NAME        cloth (cloth draped over a sphere), strip (tightening helical ribbon),
-                      fold (sheet folding onto itself), pile (boxes and tetrahedra falling
-                      onto the ground and each other)
-  --resolution N      scene resolution, N >= 2 (default 24)
-  --seed S            random seed of the scene's noise (default 1); same seed, same file
-  --max-queries M     keep at most M queries per file (default 1000; 0 = all): every
-                      colliding candidate (evenly spaced ones if more than M collide), then
-                      evenly spaced non-colliding ones, in candidate order
-  --truth METHOD      how sim computes the truth column: filtered (default; exact, about a
-                      microsecond per query) or exact (the slow reference path, rational
-                      arithmetic and CGAL's algebraic kernel, ~0.1 ms per query: for small
-                      sets); every candidate is answered, also the ones not kept
-  -h, --help          this help
-exit codes: 0 written, 2 bad usage or unwritable output, 1 internal error.
-)";
+const CommandSpec& command() {
+  static const CommandSpec spec = [] {
+    CommandSpec c;
+    c.name = "generate";
+    c.usage =
+        "usage: exactccd generate catalogue --out DIR\n"
+        "       exactccd generate sim --scene cloth|strip|fold|pile [--resolution N] [--seed S]\n"
+        "                             [--max-queries M] [--truth filtered|exact] --out DIR\n"
+        "       exactccd generate families [--seed S] [--instances N] [--k-step K] --out DIR\n"
+        "       exactccd generate scene --scene NAME [--resolution N] [--seed S] --out DIR\n";
+    c.description =
+        "Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).\n"
+        "\n"
+        "  catalogue   the hand-derived degenerate catalogue (fuzz/catalogue.cpp) with its scaled and\n"
+        "              translated copies: DIR/catalogue-vertex-face.csv and DIR/catalogue-edge-edge.csv;\n"
+        "              the truth column is the hand-derived answer\n"
+        "  families    instances of every degenerate family (fuzz/families.hpp) for k = 0, K, 2K, ...\n"
+        "              <= 60 and unperturbed, N per direction and (family, k) (default 1, K = 4):\n"
+        "              DIR/families-vertex-face.csv and DIR/families-edge-edge.csv; the truth column is\n"
+        "              the exact answer\n"
+        "  scene       one time step of a procedural scene as two meshes, DIR/T0.obj (t = 0) and\n"
+        "              DIR/T1.obj (t = 1), for exactccd scene\n"
+        "  sim         simulation-like queries: the broad-phase candidates of one time step of a\n"
+        "              procedural scene (lib/scene/procedural_scenes.hpp), written to\n"
+        "              DIR/sim-<scene>-vertex-face.csv and DIR/sim-<scene>-edge-edge.csv; the truth\n"
+        "              column is the exact answer, by the filtered method (exact, fast) unless\n"
+        "              --truth exact\n"
+        "\n"
+        "Files are written to temporaries renamed when complete: a failed run leaves no half-written\n"
+        "file.\n";
+    c.options = {
+        required(text_option("--out", "DIR", "", "output directory (created if missing)")),
+        text_option("--scene", "NAME", "",
+                    "cloth (cloth draped over a sphere), strip (tightening helical ribbon),\n"
+                    "fold (sheet folding onto itself), pile (boxes and tetrahedra falling\n"
+                    "onto the ground and each other)"),
+        integer_option("--resolution", "N", 2, kMaxResolution, "24", "scene resolution"),
+        unsigned64_option("--seed", "S", "1", "random seed of the scene's noise; same seed, same file"),
+        integer_option("--instances", "N", 1, kMaxFamilyInstances, "1",
+                       "families: instances per direction and (family, k)"),
+        integer_option("--k-step", "K", 1, 60, "4", "families: the step K between perturbation exponents"),
+        integer_option("--max-queries", "M", 0, kMaxQueriesPerFile, "1000",
+                       "keep at most M queries per file (0 = all): every\n"
+                       "colliding candidate (evenly spaced ones if more than M collide), then\n"
+                       "evenly spaced non-colliding ones, in candidate order"),
+        choice_option("--truth", "METHOD", {"filtered", "exact"}, "filtered",
+                      "how sim computes the truth column: filtered (exact, about a\n"
+                      "microsecond per query) or exact (the slow reference path, rational\n"
+                      "arithmetic and CGAL's algebraic kernel, ~0.1 ms per query: for small\n"
+                      "sets); every candidate is answered, also the ones not kept"),
+    };
+    c.epilogue = "exit codes: 0 written, 2 bad usage or unwritable output, 1 internal error.\n";
+    return c;
+  }();
+  return spec;
+}
 
 template <class E>
 io::BenchmarkQueries to_benchmark(const std::vector<E>& entries) {
@@ -71,14 +94,9 @@ io::BenchmarkQueries to_benchmark(const std::vector<E>& entries) {
 /// Writes to a temporary file and renames it: a failed run leaves no half-written file.
 void write_atomically(const fs::path& path, const io::BenchmarkQueries& q,
                       const std::string& note = "") {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw UsageError("generate: cannot write '" + tmp.string() + "'");
-    io::write_benchmark_csv(out, q);
-    if (!out) throw UsageError("generate: write error on '" + tmp.string() + "'");
-  }
-  fs::rename(tmp, path);
+  AtomicOutputFile out(path.string());
+  io::write_benchmark_csv(out.stream(), q);
+  out.commit();
   std::size_t positives = 0;
   for (bool t : q.truth) positives += t;
   std::printf("%s: %zu queries, %zu positives%s\n", path.string().c_str(), q.size(), positives,
@@ -114,49 +132,27 @@ io::BenchmarkQueries answer_and_select(const std::vector<Query>& queries, std::s
 }  // namespace
 
 int run_generate(int argc, char** argv) {
-  std::string what, out, scene_name;
-  int resolution = 24;
-  std::uint64_t seed = 1;
-  std::size_t max_queries = 1000;
-  int family_instances = 1, k_step = 4;
-  std::string truth_name = "filtered";
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      std::cout << kHelp;
-      return kExitOk;
-    } else if (a == "--out") {
-      out = option_value(argc, argv, i);
-    } else if (a == "--scene") {
-      scene_name = option_value(argc, argv, i);
-    } else if (a == "--resolution") {
-      resolution = std::stoi(option_value(argc, argv, i));
-    } else if (a == "--seed") {
-      seed = std::stoull(option_value(argc, argv, i));
-    } else if (a == "--instances") {
-      family_instances = std::stoi(option_value(argc, argv, i));
-    } else if (a == "--k-step") {
-      k_step = std::max(1, std::stoi(option_value(argc, argv, i)));
-    } else if (a == "--truth") {
-      truth_name = option_value(argc, argv, i);
-      if (truth_name != "filtered" && truth_name != "exact")
-        throw UsageError("generate: --truth expects filtered or exact, not '" + truth_name + "'");
-    } else if (a == "--max-queries") {
-      max_queries = std::stoul(option_value(argc, argv, i));
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("generate: unknown option '" + a + "' (see exactccd generate --help)");
-    } else if (what.empty()) {
-      what = a;
-    } else {
-      throw UsageError("generate: unexpected argument '" + a + "'");
-    }
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
   }
+  const std::string out = options.text("--out");
+  const std::string scene_name = options.has("--scene") ? options.text("--scene") : "";
+  const int resolution = static_cast<int>(options.integer("--resolution"));
+  const std::uint64_t seed = options.unsigned64("--seed");
+  const auto max_queries = static_cast<std::size_t>(options.integer("--max-queries"));
+  const int family_instances = static_cast<int>(options.integer("--instances"));
+  const int k_step = static_cast<int>(options.integer("--k-step"));
+  const std::string truth_name = options.text("--truth");
+  if (options.positionals().size() > 1)
+    throw UsageError("generate: unexpected argument '" + options.positionals()[1] + "'");
+  const std::string what = options.positionals().empty() ? "" : options.positionals()[0];
   if (what != "catalogue" && what != "sim" && what != "families" && what != "scene")
     throw UsageError("generate: expected catalogue, sim, families or scene (see exactccd generate --help)");
-  if (out.empty()) throw UsageError("generate: --out DIR is required");
   if (what == "scene") return generate_scene(scene_name, resolution, seed, out);
   if (what == "catalogue") {
-    fs::create_directories(out);
+    prepare_output_directory(out);
     write_atomically(fs::path(out) / "catalogue-vertex-face.csv", to_benchmark(catalogue::vertex_face_cases()));
     write_atomically(fs::path(out) / "catalogue-edge-edge.csv", to_benchmark(catalogue::edge_edge_cases()));
     return kExitOk;
@@ -174,7 +170,7 @@ int run_generate(int argc, char** argv) {
           else
             ee.push_back(std::get<EdgeEdgeQuery>(inst.query));
         }
-    fs::create_directories(out);
+    prepare_output_directory(out);
     write_atomically(fs::path(out) / "families-vertex-face.csv",
                      answer_and_select(vf, 0, [](const VertexFaceQuery& x) { return vertex_face_ccd(x); }));
     write_atomically(fs::path(out) / "families-edge-edge.csv",
@@ -182,6 +178,7 @@ int run_generate(int argc, char** argv) {
     return kExitOk;
   }
   if (scene_name.empty()) throw UsageError("generate sim: --scene cloth|strip|fold|pile is required");
+  prepare_output_directory(out);  // an unwritable DIR fails before the work
   const Method truth_method = truth_name == "exact" ? Method::exact : Method::filtered;
   scene::MovingMesh mesh;
   try {
@@ -204,7 +201,6 @@ int run_generate(int argc, char** argv) {
     return " (truth: " + truth_name + "; the step: " + std::to_string(candidates) + " candidates, " +
            std::to_string(positives) + " collide)";
   };
-  fs::create_directories(out);
   write_atomically(fs::path(out) / ("sim-" + scene_name + "-vertex-face.csv"), vf,
                    note(q.vertex_face.size(), vf_positives));
   write_atomically(fs::path(out) / ("sim-" + scene_name + "-edge-edge.csv"), ee,

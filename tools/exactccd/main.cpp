@@ -1,10 +1,12 @@
 // exactccd: the command-line program. Dispatches to one subcommand per file.
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
 
 #include "cli_common.hpp"
+#include "io/input_file.hpp"
 #include "subcommands.hpp"
 
 namespace {
@@ -54,11 +56,18 @@ int main(int argc, char** argv) {
   for (const Subcommand& s : kSubcommands) {
     if (first != s.name) continue;
     try {
-      return s.run(argc - 2, argv + 2);
+      const int code = s.run(argc - 2, argv + 2);
+      // Output that could not be written (a full disk, a closed pipe) is no silent success.
+      std::cout.flush();
+      if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout) {
+        std::cerr << "exactccd: cannot write the standard output\n";
+        return kExitUsage;
+      }
+      return code;
     } catch (const UsageError& e) {
       std::cerr << "exactccd: " << e.what() << "\n";
       return kExitUsage;
-    } catch (const exactccd::io::ParseError& e) {
+    } catch (const exactccd::io::InputError& e) {  // ParseError included: file:line: reason
       std::cerr << "exactccd: " << e.what() << "\n";
       return kExitUsage;
     } catch (const std::exception& e) {

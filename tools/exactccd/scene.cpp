@@ -2,13 +2,14 @@
 // of `exactccd generate scene`.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "cli_common.hpp"
 #include "exactccd/scene.hpp"
+#include "io/mesh_file.hpp"
 #include "io/obj.hpp"
+#include "output_file.hpp"
 #include "scene/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "subcommands.hpp"
@@ -18,36 +19,41 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kHelp = R"(usage: exactccd scene T0.obj T1.obj [--json] [--threads N]
-
-One time step of a triangle mesh whose vertices move linearly from their positions in T0.obj
-(t = 0) to those in T1.obj (t = 1); both files must have the same vertex count and faces.
-Every vertex-face and edge-edge pair is decided exactly (pairs sharing a vertex are not
-tested), with the tightest double enclosure of its time of impact.
-
-Prints the vertex and triangle counts, the broad-phase candidate pairs, the colliding
-vertex-face pairs (vertex, triangle) and edge-edge pairs (a0 a1, b0 b1: each edge ascending,
-pairs ordered) with their times of impact, the earliest time of impact, the largest collision-
-free step (1 when collision-free, else the largest double below the earliest TOI's lower
-bound) and whether the mesh is free of self-intersections at t = 0 and at t = 1 (the exact
-static check of exactccd::intersection_free). Indices are 0-based, in OBJ order (a polygon
-is fan-triangulated into consecutive triangles).
-
-options:
-  --json          print one JSON object instead: vertices, triangles, candidates, vf_pairs
-                  ([vertex, triangle] lists), ee_pairs ([a0, a1, b0, b1] lists), earliest_toi
-                  ([lo, hi] or null), max_safe_step, end_intersection_free (both ends),
-                  t0_intersection_free, t1_intersection_free
-  --threads N     narrow phase on N threads (default: all cores; same results)
-  -h, --help      this help
-exit codes: 0 ran (whatever it found), 2 bad usage or malformed or mismatched files, 1 internal
-error.
-)";
-
-io::ObjMesh load_obj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw UsageError("scene: cannot open '" + path + "'");
-  return io::read_obj(in, path);
+const CommandSpec& command() {
+  static const CommandSpec spec = [] {
+    CommandSpec c;
+    c.name = "scene";
+    c.usage = "usage: exactccd scene T0.obj T1.obj [--json] [--threads N]";
+    c.description =
+        "One time step of a triangle mesh whose vertices move linearly from their positions in T0.obj\n"
+        "(t = 0) to those in T1.obj (t = 1); both files must have the same vertex count and faces.\n"
+        "Every vertex-face and edge-edge pair is decided exactly (pairs sharing a vertex are not\n"
+        "tested), with the tightest double enclosure of its time of impact.\n"
+        "\n"
+        "Prints the vertex and triangle counts, the broad-phase candidate pairs, the colliding\n"
+        "vertex-face pairs (vertex, triangle) and edge-edge pairs (a0 a1, b0 b1: each edge ascending,\n"
+        "pairs ordered) with their times of impact, the earliest time of impact, the largest collision-\n"
+        "free step (1 when collision-free, else the largest double below the earliest TOI's lower\n"
+        "bound) and whether the mesh is free of self-intersections at t = 0 and at t = 1 (the exact\n"
+        "static check of exactccd::intersection_free). Indices are 0-based, in OBJ order (a polygon\n"
+        "is fan-triangulated into consecutive triangles).\n"
+        "\n"
+        "Input: OBJ files (.obj), read strictly (README, \"Input files\"); PLY, OFF and STL files are\n"
+        "recognised and refused, as are files whose content does not match their extension.\n";
+    c.options = {
+        flag_option("--json",
+                    "print one JSON object instead: vertices, triangles, candidates, vf_pairs\n"
+                    "([vertex, triangle] lists), ee_pairs ([a0, a1, b0, b1] lists), earliest_toi\n"
+                    "([lo, hi] or null), max_safe_step, end_intersection_free (both ends),\n"
+                    "t0_intersection_free, t1_intersection_free"),
+        threads_option("", "narrow phase on N threads (default: all cores; same results)"),
+    };
+    c.epilogue =
+        "exit codes: 0 ran (whatever it found), 2 bad usage or malformed or mismatched files, 1 internal\n"
+        "error.\n";
+    return c;
+  }();
+  return spec;
 }
 
 /// The scene of two OBJ files, or UsageError when they are not the same mesh.
@@ -80,33 +86,17 @@ std::string interval(const TimeInterval& t) { return "[" + number(t.lo) + ", " +
 }  // namespace
 
 int run_scene(int argc, char** argv) {
-  std::vector<std::string> files;
-  bool json = false;
-  SceneOptions options;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      std::cout << kHelp;
-      return kExitOk;
-    } else if (a == "--json") {
-      json = true;
-    } else if (a == "--threads") {
-      const std::string v = option_value(argc, argv, i);
-      try {
-        const int n = std::stoi(v);
-        if (n < 1) throw std::invalid_argument(v);
-        options.threads = static_cast<unsigned>(n);
-      } catch (const std::exception&) {
-        throw UsageError("scene: --threads needs a positive integer, not '" + v + "'");
-      }
-    } else if (!a.empty() && a[0] == '-') {
-      throw UsageError("scene: unknown option '" + a + "' (see exactccd scene --help)");
-    } else {
-      files.push_back(a);
-    }
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
   }
+  const bool json = options.flag("--json");
+  SceneOptions scene_options;
+  if (options.has("--threads")) scene_options.threads = static_cast<unsigned>(options.integer("--threads"));
+  const std::vector<std::string>& files = options.positionals();
   if (files.size() != 2) throw UsageError("scene: expected two files, T0.obj T1.obj (see exactccd scene --help)");
-  const io::ObjMesh m0 = load_obj(files[0]), m1 = load_obj(files[1]);
+  const io::TriangleMesh m0 = io::read_mesh(files[0]), m1 = io::read_mesh(files[1]);
   const Scene s = scene_of(files[0], m0, files[1], m1);
   try {
     validate(s);
@@ -115,7 +105,7 @@ int run_scene(int argc, char** argv) {
   }
   const scene::ScenePrimitives prim = scene::scene_primitives(s);
   const std::size_t candidates = prim.candidates.vertex_face.size() + prim.candidates.edge_edge.size();
-  const std::vector<Collision> collisions = find_collisions(s, options);
+  const std::vector<Collision> collisions = find_collisions(s, scene_options);
   const std::optional<TimeInterval> earliest = earliest_toi(collisions);
   const double step = max_collision_free_step(earliest);
   const bool free0 = intersection_free(s.positions_t0, s.triangles);
@@ -171,21 +161,18 @@ int generate_scene(const std::string& scene_name, int resolution, std::uint64_t 
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("generate scene: ") + e.what());
   }
-  fs::create_directories(out);
+  prepare_output_directory(out);
   const std::string comment = "exactccd generate scene --scene " + scene_name + " --resolution " +
                               std::to_string(resolution) + " --seed " + std::to_string(seed);
-  // Both files go to temporary names first, then are renamed: no half-written pair.
+  // Both files go to temporaries first, renamed once both are written: no half-written pair.
   const char* const names[] = {"T0.obj", "T1.obj"};
   const std::vector<Vec3>* const positions[] = {&mesh.positions_t0, &mesh.positions_t1};
-  for (int i = 0; i < 2; ++i) {
-    const fs::path tmp = fs::path(out) / (std::string(names[i]) + ".tmp");
-    std::ofstream f(tmp);
-    if (!f) throw UsageError("generate scene: cannot write '" + tmp.string() + "'");
-    io::write_obj(f, *positions[i], mesh.triangles, comment + " (" + names[i] + ")");
-    f.close();
-    if (!f) throw UsageError("generate scene: write error on '" + tmp.string() + "'");
-  }
-  for (const char* name : names) fs::rename(fs::path(out) / (std::string(name) + ".tmp"), fs::path(out) / name);
+  AtomicOutputFile t0((fs::path(out) / names[0]).string()), t1((fs::path(out) / names[1]).string());
+  AtomicOutputFile* const files[] = {&t0, &t1};
+  for (int i = 0; i < 2; ++i)
+    io::write_obj(files[i]->stream(), *positions[i], mesh.triangles, comment + " (" + names[i] + ")");
+  t0.commit();
+  t1.commit();
   std::printf("%s: %zu vertices, %zu triangles (T0.obj, T1.obj)\n", out.c_str(), mesh.positions_t0.size(),
               mesh.triangles.size());
   return kExitOk;

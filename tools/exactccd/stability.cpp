@@ -1,39 +1,54 @@
 // exactccd stability: sweeps the degenerate families over the perturbation exponent k and
 // writes each method's false-positive and false-negative rates against the exact answer.
 #include <cstdio>
-#include <fstream>
+#include <optional>
 #include <iostream>
 #include <sstream>
 #include <vector>
 
 #include "cli_common.hpp"
 #include "fuzz/families.hpp"
+#include "output_file.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
 namespace {
 
-constexpr const char* kHelp = R"(usage: exactccd stability [options]
+/// The largest perturbation exponent: 2^-1074 is the smallest positive double.
+constexpr long long kMaxK = 1074;
+/// The most instances per (family, k): a bound on the run time.
+constexpr long long kMaxInstances = 1000000;
 
-Sweeps every degenerate family (fuzz/families.hpp: a degenerate configuration perturbed by
-2^-k times the scene scale, towards or away from contact) over k = K_MIN..K_MAX, plus the
-unperturbed configuration (k written as -1), and writes for every method the false-positive
-and false-negative counts and rates against the exact answer (the CGAL reference), as CSV:
-  family,kind,method,k,queries,fp,fn,fp_rate,fn_rate
-Instances alternate between the two directions; each is seeded from (seed, family, k, i), so
-a run is reproducible and independent of --threads.
-
-options:
-  --families LIST      comma-separated family names, or all (default)
-  --methods LIST       comma-separated methods or all (default): naive, naive-tolerance, mpfr24,
-                       mpfr53, mpfr113, mpfr256, filtered, exact
-  --k-min K, --k-max K range of k (default 0..60)
-  --instances N        instances per (family, k) (default 20)
-  --seed S             base seed (default 1)
-  --out FILE           write the CSV there (default: stdout)
-%s  -h, --help           this help
-exit codes: 0 ran, 2 bad usage, 1 internal error.
-)";
+const CommandSpec& command() {
+  static const CommandSpec spec = [] {
+    CommandSpec c;
+    c.name = "stability";
+    c.usage = "usage: exactccd stability [options]";
+    c.description =
+        "Sweeps every degenerate family (fuzz/families.hpp: a degenerate configuration perturbed by\n"
+        "2^-k times the scene scale, towards or away from contact) over k = K_MIN..K_MAX, plus the\n"
+        "unperturbed configuration (k written as -1), and writes for every method the false-positive\n"
+        "and false-negative counts and rates against the exact answer (the CGAL reference), as CSV:\n"
+        "  family,kind,method,k,queries,fp,fn,fp_rate,fn_rate\n"
+        "Instances alternate between the two directions; each is seeded from (seed, family, k, i), so\n"
+        "a run is reproducible and independent of --threads.\n";
+    c.options = {
+        text_option("--families", "LIST", "all", "comma-separated family names, or all"),
+        choice_list_option("--methods", "LIST", all_method_names(), "all", "the methods to run"),
+        integer_option("--k-min", "K", 0, kMaxK, "0", "smallest k"),
+        integer_option("--k-max", "K", 0, kMaxK, "60", "largest k (at least --k-min)"),
+        integer_option("--instances", "N", 1, kMaxInstances, "20", "instances per (family, k)"),
+        unsigned64_option("--seed", "S", "1", "base seed"),
+        text_option("--out", "FILE", "",
+                    "write the CSV there (default: stdout); written to a temporary renamed\n"
+                    "when complete"),
+    };
+    for (OptionSpec& o : batch_option_specs()) c.options.push_back(o);
+    c.epilogue = "exit codes: 0 ran, 2 bad usage, 1 internal error.\n";
+    return c;
+  }();
+  return spec;
+}
 
 std::vector<std::string> split(const std::string& list) {
   std::vector<std::string> out;
@@ -62,37 +77,22 @@ struct Cell {  // one (family, k): counts per method
 }  // namespace
 
 int run_stability(int argc, char** argv) {
-  std::string families_list = "all", methods_list = "all", out_path;
-  int k_min = 0, k_max = 60, instances = 20;
-  std::uint64_t seed = 1;
-  BatchOptions batch;
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-h" || a == "--help") {
-      std::printf(kHelp, kBatchOptionsHelp);
-      return kExitOk;
-    } else if (batch.parse(argc, argv, i)) {
-      continue;
-    } else if (a == "--families") {
-      families_list = option_value(argc, argv, i);
-    } else if (a == "--methods") {
-      methods_list = option_value(argc, argv, i);
-    } else if (a == "--k-min") {
-      k_min = std::stoi(option_value(argc, argv, i));
-    } else if (a == "--k-max") {
-      k_max = std::stoi(option_value(argc, argv, i));
-    } else if (a == "--instances") {
-      instances = std::stoi(option_value(argc, argv, i));
-    } else if (a == "--seed") {
-      seed = std::stoull(option_value(argc, argv, i));
-    } else if (a == "--out") {
-      out_path = option_value(argc, argv, i);
-    } else {
-      throw UsageError("stability: unknown argument '" + a + "' (see exactccd stability --help)");
-    }
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
   }
-  if (k_min < 0 || k_max < k_min || instances < 1)
-    throw UsageError("stability: need 0 <= k-min <= k-max and instances >= 1");
+  const std::string families_list = options.text("--families");
+  const int k_min = static_cast<int>(options.integer("--k-min")), k_max = static_cast<int>(options.integer("--k-max"));
+  const int instances = static_cast<int>(options.integer("--instances"));
+  const std::uint64_t seed = options.unsigned64("--seed");
+  const BatchOptions batch = batch_options(options);
+  if (!options.positionals().empty())
+    throw UsageError("stability: unknown argument '" + options.positionals()[0] + "' (see exactccd stability --help)");
+  if (k_max < k_min) throw UsageError("stability: need --k-min <= --k-max");
+  // An unwritable --out FILE fails now, not after the whole run.
+  std::optional<AtomicOutputFile> file;
+  if (options.has("--out")) file.emplace(options.text("--out"));
 
   std::vector<const families::Family*> fams;
   if (families_list == "all") {
@@ -105,11 +105,7 @@ int run_stability(int argc, char** argv) {
     }
   }
   std::vector<Method> methods;
-  if (methods_list == "all") {
-    methods = all_methods();
-  } else {
-    for (const std::string& n : split(methods_list)) methods.push_back(parse_method(n));
-  }
+  for (const std::string& n : options.list("--methods")) methods.push_back(parse_method(n));
 
   // Tasks: (family, k) pairs, k = -1 for the unperturbed configuration.
   std::vector<std::pair<const families::Family*, int>> tasks;
@@ -138,12 +134,7 @@ int run_stability(int argc, char** argv) {
     }
   }, "stability");
 
-  std::ofstream file;
-  if (!out_path.empty()) {
-    file.open(out_path);
-    if (!file) throw UsageError("stability: cannot write '" + out_path + "'");
-  }
-  std::ostream& out = out_path.empty() ? std::cout : file;
+  std::ostringstream out;
   out << "family,kind,method,k,queries,fp,fn,fp_rate,fn_rate\n";
   for (std::size_t t = begin; t < end; ++t) {
     const auto& [family, k] = tasks[t];
@@ -153,6 +144,12 @@ int run_stability(int argc, char** argv) {
           << ',' << k << ',' << c.queries << ',' << c.fp[m] << ',' << c.fn[m] << ','
           << static_cast<double>(c.fp[m]) / c.queries << ',' << static_cast<double>(c.fn[m]) / c.queries
           << '\n';
+  }
+  if (file) {
+    file->stream() << out.str();
+    file->commit();
+  } else {
+    std::cout << out.str();
   }
   return kExitOk;
 }

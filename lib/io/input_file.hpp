@@ -1,0 +1,56 @@
+// Opening input files for reading with errors that name the file and say what is wrong
+// (missing, a directory, unreadable), and skipping a UTF-8 byte order mark so that no reader
+// loses its first line to it. Every input error of the readers derives from InputError.
+#pragma once
+
+#include <fstream>
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+
+namespace exactccd::io {
+
+/// An input that cannot be used: what() is "<source>: <reason>" (ParseError, which derives
+/// from it, adds the line: "<source>:<line>: <reason>").
+class InputError : public std::runtime_error {
+ public:
+  /// An error about the whole of `source` (usually a file path); `reason` says what is wrong.
+  InputError(const std::string& source, const std::string& reason);
+  /// The source name (usually the file path).
+  const std::string& source() const { return source_; }
+
+ protected:
+  /// For derived errors that format what() themselves.
+  InputError(const std::string& source, const std::string& what, bool preformatted);
+
+ private:
+  std::string source_;
+};
+
+/// Consumes a UTF-8 byte order mark (EF BB BF) at the stream's current position, if there is
+/// one; returns whether it did. Anything else is left unread.
+bool skip_byte_order_mark(std::istream& in);
+
+/// A file opened for reading, positioned after its UTF-8 byte order mark if it has one.
+class InputFile {
+ public:
+  /// Opens `path`. Throws InputError "<path>: no such file", "<path>: is a directory" or
+  /// "<path>: cannot open: <system reason>" (e.g. permission denied).
+  explicit InputFile(const std::string& path);
+  /// The stream to read from (after the byte order mark).
+  std::istream& stream() { return in_; }
+  /// The path as given.
+  const std::string& path() const { return path_; }
+  /// Whether the file started with a UTF-8 byte order mark (skipped).
+  bool had_byte_order_mark() const { return had_bom_; }
+  /// Throws InputError "<path>: read error" when the stream failed for another reason than
+  /// reaching the end of the file (call after reading everything).
+  void check_read() const;
+
+ private:
+  std::string path_;
+  std::ifstream in_;
+  bool had_bom_ = false;
+};
+
+}  // namespace exactccd::io
