@@ -1,5 +1,5 @@
 // The fuzzers' property in every build (no clang needed): every committed seed-corpus input,
-// and every input the fuzzers ever found failing (kRegressions, none so far), satisfies
+// and every query an earlier version answered wrongly (kRegressions), satisfies
 // fuzz/fuzz_check.hpp (filtered == exact, identical TOIs, ...). Plus the input decoder's
 // contract (fuzz/fuzz_input.hpp), which the seeds and fuzz-against rely on.
 #include <gtest/gtest.h>
@@ -47,15 +47,113 @@ void check_corpus(const char* kind) {
 TEST(FuzzCorpus, VertexFaceSeedsSatisfyTheProperty) { check_corpus<VertexFaceQuery>("vertex_face"); }
 TEST(FuzzCorpus, EdgeEdgeSeedsSatisfyTheProperty) { check_corpus<EdgeEdgeQuery>("edge_edge"); }
 
-/// Queries the fuzzers found violating the property, minimized, with what failed: the 8 points
-/// in benchmark row order (hex floats, as the fuzzers print them).
+/// Queries an earlier version answered wrongly (found by the fuzzers, minimized, or by the
+/// wide-exponent families), with what failed: the 8 points in benchmark row order (hex floats,
+/// as the fuzzers print them) and the answer when it is known without the library.
 struct Regression {
   const char* what;
   bool vertex_face;
   Rows rows;
+  std::optional<bool> collides;  ///< by hand or by construction; nullopt: only the exact path knows
 };
 const std::vector<Regression> kRegressions = {
-    // None yet: the longest session (docs/fuzzing.md) found no violation.
+    // The fuzzers (spread limit 400, docs/fuzzing.md) found none. Wide-exponent queries the
+    // filtered method answered "no collision" before commit 0aa1a3d (its static volume filter
+    // took a per-operation 2^-1075 as the underflow error, but later products amplify it):
+    // the reported one, its edge-edge analogue (tests/test_wide_exponents.cpp derives both by
+    // hand) and the seven instances of tests/test_wide_exponents.cpp that failed on that
+    // version's filter (all with the sheared style of families::make_wide; answers by
+    // construction). Each collides.
+    {"the reported query (issue 10): a static triangle (0,0,0), (2^200,0,1), (0,2^-538,0); p crosses its plane inside at t = 1/2 (stage 1 false negative before 0aa1a3d)", true,
+     {{{0x1p-360, 0x1p-539, 0x0p+0},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x0p+0, 0x1p-538, 0x0p+0},
+      {0x1p-360, 0x1p-539, 0x1p-559},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x0p+0, 0x1p-538, 0x0p+0}}},
+     true},
+    {"edge-edge analogue of the reported query: an edge along (2^200, 0, 1), a 2^-538-long edge crossing it at t = 1/2 (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x1p-360, -0x1p-539, 0x0p+0},
+      {0x1p-360, 0x1p-539, 0x0p+0},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x1p-360, -0x1p-539, 0x1p-559},
+      {0x1p-360, 0x1p-539, 0x1p-559}}},
+     true},
+    {"families::make_wide(vf_vertex_through_edge, k 14, toward, sheared) (stage 1 false negative before 0aa1a3d)", true,
+     {{{0x1.0008p-659, -0x1.0008p+759, 0x1.0018p-877},
+      {0x1p-659, 0x0p+0, 0x0p+0},
+      {0x1.001p-659, -0x1p+760, 0x1.8p-875},
+      {0x1p-659, -0x1p+760, 0x1.8p-875},
+      {0x1.0008p-659, -0x1.0008p+759, 0x1.4006p-875},
+      {0x1p-659, 0x0p+0, 0x0p+0},
+      {0x1.001p-659, -0x1p+760, 0x1.8p-875},
+      {0x1p-659, -0x1p+760, 0x1.8p-875}}},
+     true},
+    {"families::make_wide(vf_nearly_static, unperturbed, sheared): static contact (stage 1 false negative before 0aa1a3d)", true,
+     {{{0x1p-771, 0x1.8p+1013, -0x1.7ffffffff4p-995},
+      {0x0p+0, 0x0p+0, -0x1.8p-995},
+      {0x1p-769, 0x1.8p+1015, -0x1.7ffffffffp-995},
+      {0x0p+0, 0x0p+0, -0x1.7fffffffep-995},
+      {0x1p-771, 0x1.8p+1013, -0x1.7ffffffff4p-995},
+      {0x0p+0, 0x0p+0, -0x1.8p-995},
+      {0x1p-769, 0x1.8p+1015, -0x1.7ffffffffp-995},
+      {0x0p+0, 0x0p+0, -0x1.7fffffffep-995}}},
+     true},
+    {"families::make_wide(vf_large_offset, unperturbed, sheared) (stage 1 false negative before 0aa1a3d)", true,
+     {{{-0x1p+715, 0x1p-596, 0x1.7ffffff8p-488},
+      {0x0p+0, 0x0p+0, 0x1.8p-488},
+      {-0x1p+716, 0x1p-595, 0x1.8000001p-488},
+      {0x0p+0, -0x1p-595, 0x1.8p-488},
+      {-0x1p+715, 0x1p-596, 0x1.80000018p-488},
+      {0x0p+0, 0x0p+0, 0x1.8p-488},
+      {-0x1p+716, 0x1p-595, 0x1.8000001p-488},
+      {0x0p+0, -0x1p-595, 0x1.8p-488}}},
+     true},
+    {"families::make_wide(ee_edge_through_endpoint, k 0, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x1.8p+0, -0x0.0007fffffep-1022, 0x1.00000004p+608},
+      {0x1.8p+0, -0x0.0008000002p-1022, 0x1.fffffff8p+607},
+      {0x1.7fffffffffcp+0, -0x0.0007fffff8p-1022, 0x1p+608},
+      {0x1.80000000004p+0, -0x0.0008000004p-1022, 0x1p+608},
+      {0x1.8p+0, -0x0.0007fffffep-1022, 0x1.00000004p+608},
+      {0x1.8p+0, -0x0.0008000002p-1022, 0x1.fffffff8p+607},
+      {0x1.7fffffffffcp+0, -0x0.0007fffffcp-1022, 0x1p+608},
+      {0x1.80000000004p+0, -0x0.0008000008p-1022, 0x1p+608}}},
+     true},
+    {"families::make_wide(ee_edge_through_endpoint, k 26, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x0p+0, -0x0.003fffffdp-1022, 0x1.0000ep+873},
+      {0x0p+0, 0x0.004000003p-1022, -0x1.fffe4p+872},
+      {0x1p-682, 0x0.001000002p-1022, 0x1.c08p+856},
+      {-0x1p-682, 0x0.001000002p-1022, 0x1.c08p+856},
+      {0x0p+0, -0x0.003fffffdp-1022, 0x1.0000ep+873},
+      {0x0p+0, 0x0.004000003p-1022, -0x1.fffe4p+872},
+      {0x1p-682, 0x0.007000002p-1022, -0x1.ffff1fcp+873},
+      {-0x1p-682, 0x0.007000002p-1022, -0x1.ffff1fcp+873}}},
+     true},
+    {"families::make_wide(ee_grazing, k 2, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{-0x1.bfffp-353, -0x1.8p-866, 0x1.7fffcp+755},
+      {-0x1.c001p-353, -0x1.8p-866, 0x1.80004p+755},
+      {-0x1.c0038p-353, -0x1.8000004p-866, 0x1.8000fp+755},
+      {-0x1.bfff8p-353, -0x1.7fffffep-866, 0x1.7fffdp+755},
+      {-0x1.bfffp-353, -0x1.8p-866, 0x1.7fffcp+755},
+      {-0x1.c001p-353, -0x1.8p-866, 0x1.80004p+755},
+      {-0x1.c004p-353, -0x1.8000004p-866, 0x1.8000fp+755},
+      {-0x1.bffcp-353, -0x1.7fffffap-866, 0x1.7fff1p+755}}},
+     true},
+    {"families::make_wide(ee_contact_at_t1, k 2, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{-0x1.000000000008p+642, 0x1p-572, -0x1p-516},
+      {-0x1.fffffffffffp+641, -0x1p-572, 0x1p-516},
+      {-0x1p+642, -0x1p-573, -0x1p-515},
+      {-0x1p+642, 0x1p-573, -0x1p-515},
+      {-0x1.000000000008p+642, 0x1p-572, -0x1p-516},
+      {-0x1.fffffffffffp+641, -0x1p-572, 0x1p-516},
+      {-0x1p+642, -0x1p-573, 0x1p-517},
+      {-0x1p+642, 0x1p-573, 0x1p-517}}},
+     true},
 };
 
 TEST(FuzzRegressions, StayFixed) {
@@ -63,6 +161,12 @@ TEST(FuzzRegressions, StayFixed) {
     const auto violation = reg.vertex_face ? fuzzing::find_violation<VertexFaceQuery>(reg.rows)
                                            : fuzzing::find_violation<EdgeEdgeQuery>(reg.rows);
     EXPECT_FALSE(violation) << reg.what << "\n" << violation.value_or("");
+    if (!reg.collides) continue;
+    for (Method m : {Method::filtered, Method::exact}) {
+      const bool got = reg.vertex_face ? vertex_face_ccd(from_rows<VertexFaceQuery>(reg.rows), m)
+                                       : edge_edge_ccd(from_rows<EdgeEdgeQuery>(reg.rows), m);
+      EXPECT_EQ(got, *reg.collides) << reg.what << (m == Method::exact ? " (exact)" : " (filtered)");
+    }
   }
 }
 
