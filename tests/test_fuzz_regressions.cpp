@@ -203,6 +203,27 @@ TEST(FuzzInput, FamilyModeIsTheFamilysInstance) {
   }
 }
 
+TEST(FuzzInput, FamilyModeWidePlacementIsMakeWide) {
+  std::size_t index = 0;
+  int wide = 0;
+  for (const families::Family& f : families::all_families()) {
+    if (f.vertex_face) continue;
+    for (int s = 0; s < families::kWideStyleCount; ++s) {
+      const auto style = static_cast<families::WideStyle>(s);
+      const auto bytes = fuzzing::encode_family(index, 8, true, 77, style);
+      const Rows got = fuzzing::decode(bytes.data(), bytes.size(), false);
+      std::mt19937_64 rng(77);
+      const auto inst = families::make_wide(f, 8, true, style, rng);
+      ASSERT_TRUE(inst.has_value()) << f.name << " " << families::wide_style_name(style);
+      const Rows want = rows(std::get<EdgeEdgeQuery>(inst->query));
+      EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << f.name << " " << families::wide_style_name(style);
+      wide += fuzzing::exponent_spread(got) > 1000;
+    }
+    ++index;
+  }
+  EXPECT_GE(wide, 4) << "wide placements decode to wide queries (9 of the 40 here span > 1000 bits)";
+}
+
 TEST(FuzzInput, CatalogueModeIsTheEntry) {
   const auto cases = catalogue::edge_edge_cases();
   for (std::size_t i : {std::size_t{0}, cases.size() / 2, cases.size() - 1}) {
@@ -237,6 +258,12 @@ TEST(FuzzInput, EditsBuildDegeneracies) {
   EXPECT_EQ(nudged[0].x, std::nextafter(base[0].x, 1e300));
   const Rows special = edited(8, 5, 2);  // coordinate 5 := 2^-1074
   EXPECT_EQ(special[1].z, 0x1p-1074);
+  const Rows scaled = edited(14, 2 + 3 * 1, 239);  // axis 2 times 2^((239 - 128) 9 + 1) = 2^1000
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(scaled[i].z, std::ldexp(base[i].z, 1000));
+    EXPECT_EQ(scaled[i].x, base[i].x);
+  }
+  EXPECT_EQ(edited(14, 0, 0)[3].x, std::ldexp(base[3].x, -1152));  // the bottom of the range
 }
 
 TEST(FuzzInput, EveryInputDecodesAndRandomInputsAreFinite) {
