@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace exactccd::families {
@@ -54,6 +55,22 @@ std::string to_string(const KnownToi& known) {
   for (std::size_t i = 0; i < known.polynomial.size(); ++i)
     out += (i ? ", " : "") + known.polynomial[i].get_str();
   return out + "] in [" + known.from.get_str() + ", " + known.to.get_str() + "]";
+}
+
+std::optional<std::string> disagreement(const Instance& instance, bool collides,
+                                        const std::optional<TimeInterval>& toi) {
+  if (!instance.expected) return std::nullopt;
+  const auto answer = [](bool c) { return std::string(c ? "collides" : "no collision"); };
+  if (collides != *instance.expected || toi.has_value() != *instance.expected)
+    return "constructed: " + answer(*instance.expected) + "; given: " + answer(collides) + ", TOI " +
+           (toi ? "given" : "none");
+  if (instance.toi && toi && !is_tightest_enclosure(*instance.toi, *toi)) {
+    char interval[96];
+    std::snprintf(interval, sizeof interval, "[%a, %a]", toi->lo, toi->hi);
+    return std::string("the TOI ") + interval + " is not the tightest enclosure of the constructed TOI " +
+           to_string(*instance.toi);
+  }
+  return std::nullopt;
 }
 
 namespace {

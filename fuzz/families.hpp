@@ -55,6 +55,12 @@ struct Instance {
   std::optional<KnownToi> toi;
 };
 
+/// Why the instance's constructed answer or TOI contradicts an answer and TOI of the library
+/// (e.g. Method::exact's): a description, or nullopt when they agree or the instance has no
+/// constructed answer.
+std::optional<std::string> disagreement(const Instance& instance, bool collides,
+                                        const std::optional<TimeInterval>& toi);
+
 /// A family: a name, a kind and a generator of instances for a perturbation exponent k
 /// (delta = 2^-k times the scale; k = kUnperturbed gives the exact degeneracy itself).
 struct Family {

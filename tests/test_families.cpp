@@ -125,6 +125,26 @@ TEST(Families, TightestEnclosureCheck) {
   EXPECT_EQ(accepted, 1);
 }
 
+// disagreement() (generate families' check against Method::exact) reports every contradiction.
+TEST(Families, DisagreementNamesEveryContradiction) {
+  const Family* f = find_family("vf_vertex_through_edge");
+  ASSERT_NE(f, nullptr);
+  const Instance hit = f->local(kUnperturbed, true);  // collides at t = 1/2
+  ASSERT_EQ(hit.expected, std::optional<bool>(true));
+  EXPECT_FALSE(disagreement(hit, true, TimeInterval{0.5, 0.5}));
+  EXPECT_TRUE(disagreement(hit, false, std::nullopt));
+  EXPECT_TRUE(disagreement(hit, true, std::nullopt));
+  EXPECT_TRUE(disagreement(hit, true, TimeInterval{0.5, std::nextafter(0.5, 1.0)}));
+  EXPECT_TRUE(disagreement(hit, true, TimeInterval{0.25, 0.25}));
+  const Instance miss = f->local(10, false);
+  ASSERT_EQ(miss.expected, std::optional<bool>(false));
+  EXPECT_FALSE(disagreement(miss, false, std::nullopt));
+  EXPECT_TRUE(disagreement(miss, true, TimeInterval{0.5, 0.5}));
+  Instance unknown = miss;
+  unknown.expected.reset();
+  EXPECT_FALSE(disagreement(unknown, true, TimeInterval{0.5, 0.5})) << "nothing constructed, nothing to contradict";
+}
+
 TEST(Families, RandomInstancesAreDeterministicPerSeed) {
   std::mt19937_64 a(42), b(42);
   for (int i = 0; i < 50; ++i) {
