@@ -57,7 +57,7 @@ struct Regression {
   std::optional<bool> collides;  ///< by hand or by construction; nullopt: only the exact path knows
 };
 const std::vector<Regression> kRegressions = {
-    // The fuzzers (spread limit 400, docs/fuzzing.md) found none. Wide-exponent queries the
+    // The fuzzers in the default configuration (spread limit 400, docs/fuzzing.md) found none. Wide-exponent queries the
     // filtered method answered "no collision" before commit 0aa1a3d (its static volume filter
     // took a per-operation 2^-1075 as the underflow error, but later products amplify it):
     // the reported one, its edge-edge analogue (tests/test_wide_exponents.cpp derives both by
@@ -154,6 +154,19 @@ const std::vector<Regression> kRegressions = {
       {-0x1p+642, -0x1p-573, 0x1p-517},
       {-0x1p+642, 0x1p-573, 0x1p-517}}},
      true},
+    // Found by fuzz_vertex_face in the full-range configuration (EXACTCCD_FUZZ_MAX_SPREAD=2200)
+    // on the pre-0aa1a3d filter in 832 inputs, without the wide-* seeds: with the triangle's b
+    // and c exchanged the filtered method said "no collision" (exact: collides, TOI near 5/6).
+    {"full-range fuzzing, old stage 1: the answer depended on the order of b and c", true,
+     {{{0x1.80000000005p+959, 0x1.3ffff8p-704, 0x1.0cp-448},
+       {0x1.8p+959, 0x1.4p-704, 0x1p-448},
+       {0x1.8p+959, 0x1.3fffep-704, 0x1p-448},
+       {0x1.80000000014p+959, 0x1.4p-704, 0x1.1p-448},
+       {0x1.80000000005p+959, 0x1.3ffff8p-704, 0x1.0cp-448},
+       {0x1.8p+959, 0x1.4p-704, 0x1p-448},
+       {0x1.8p+959, 0x1.3fffep-704, 0x1p-448},
+       {0x1.80000000004p+959, 0x1.4p-704, 0x1.1p-448}}},
+     std::nullopt},
 };
 
 TEST(FuzzRegressions, StayFixed) {
