@@ -2,7 +2,9 @@
 # - Every build: the example plug-ins of `exactccd fuzz-against` (build/plugins/*.so).
 # - With tests: the plug-in loader and fuzz-against contract, and the seed corpus' freshness.
 # - EXACTCCD_BUILD_FUZZERS (clang only; the flags are set at the top): the libFuzzer targets
-#   fuzz_vertex_face and fuzz_edge_edge and their CTest smoke runs (fuzz.*).
+#   fuzz_vertex_face and fuzz_edge_edge and their CTest smoke runs (fuzz.*): one in the default
+#   configuration (exponent spread limit 400) and one in the full-range configuration
+#   (EXACTCCD_FUZZ_MAX_SPREAD=2200: no limit, every exponent from 2^-1074 to 2^1023).
 
 target_link_libraries(exactccd_cli PRIVATE ${CMAKE_DL_LIBS})  # dlopen for fuzz-against
 
@@ -36,6 +38,8 @@ endif()
 
 if(EXACTCCD_BUILD_FUZZERS)
   set(EXACTCCD_FUZZ_SMOKE_RUNS 2000 CACHE STRING "Inputs per fuzzer in the CTest smoke runs")
+  set(EXACTCCD_FUZZ_SMOKE_FULL_RANGE_RUNS 400 CACHE STRING
+      "Inputs per fuzzer in the full-range CTest smoke runs (wide inputs cost up to seconds each)")
   enable_testing()
   foreach(kind vertex_face edge_edge)
     add_executable(fuzz_${kind} fuzz/fuzz_${kind}.cpp)
@@ -48,5 +52,12 @@ if(EXACTCCD_BUILD_FUZZERS)
       COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec '$<TARGET_FILE:fuzz_${kind}>' -runs=${EXACTCCD_FUZZ_SMOKE_RUNS} -seed=1 -max_len=512 -timeout=60 -print_final_stats=1 '${scratch}' '${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/${kind}'")
     set_tests_properties(fuzz.${kind}.smoke PROPERTIES TIMEOUT 600
       ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
+    # The full-range configuration: no exponent-spread limit, so the wide seeds (famwide-*,
+    # wide-*, grid-axis-scales) and whatever wide inputs the mutations make are checked too.
+    set(scratch_full ${CMAKE_CURRENT_BINARY_DIR}/fuzz-smoke-full-range/${kind})
+    add_test(NAME fuzz.${kind}.smoke_full_range
+      COMMAND sh -c "rm -rf '${scratch_full}' && mkdir -p '${scratch_full}' && exec '$<TARGET_FILE:fuzz_${kind}>' -runs=${EXACTCCD_FUZZ_SMOKE_FULL_RANGE_RUNS} -seed=1 -max_len=512 -timeout=120 -print_final_stats=1 '${scratch_full}' '${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/${kind}'")
+    set_tests_properties(fuzz.${kind}.smoke_full_range PROPERTIES TIMEOUT 900
+      ENVIRONMENT "EXACTCCD_FUZZ_MAX_SPREAD=2200;ASAN_OPTIONS=detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
   endforeach()
 endif()

@@ -56,8 +56,10 @@ Vec3 lerp(const Vec3& p, const Vec3& q, double s) {
   return {p.x + s * (q.x - p.x), p.y + s * (q.y - p.y), p.z + s * (q.z - p.z)};
 }
 
+constexpr int kEditCount = 15;
+
 void apply_edit(Rows& r, std::uint8_t op, std::uint8_t a, std::uint8_t b) {
-  switch (op % 14) {
+  switch (op % kEditCount) {
     case 0:  // a shared / repeated vertex
       r[b % 8] = r[a % 8];
       break;
@@ -124,6 +126,12 @@ void apply_edit(Rows& r, std::uint8_t op, std::uint8_t a, std::uint8_t b) {
     case 13:  // a point on the line through two others (rounded for 1/3, 2/3: nearly collinear)
       r[a % 8] = lerp(r[b % 8], r[(b >> 3) % 8], kLineParameters[(a >> 3) % 8]);
       break;
+    case 14: {  // one axis scaled by 2^e, e in [-1152, 1151]: exponent spreads across axes
+      const int ax = a % 3;
+      const int e = (static_cast<int>(b) - 128) * 9 + (a / 3) % 9;
+      for (Vec3& p : r) axis(p, ax) = std::ldexp(axis(p, ax), e);
+      break;
+    }
   }
 }
 
@@ -197,10 +205,15 @@ Rows decode(const std::uint8_t* data, std::size_t size, bool vertex_face) {
       const auto& pool = vertex_face ? vf : ee;
       const families::Family* f = pool[in.u8() % pool.size()];
       const int k = k_from_byte(in.u8());
-      const bool toward = (in.u8() & 1) != 0;
+      const std::uint8_t direction = in.u8();
+      const bool toward = (direction & 1) != 0;
+      const int placement = (direction >> 1) % (families::kWideStyleCount + 1);
       std::mt19937_64 rng(in.u64());
-      const families::Instance inst = f->make(k, toward, rng);
-      std::visit([&r](const auto& q) { r = rows(q); }, inst.query);
+      std::optional<families::Instance> inst;
+      if (placement > 0)
+        inst = families::make_wide(*f, k, toward, static_cast<families::WideStyle>(placement - 1), rng);
+      if (!inst) inst = f->make(k, toward, rng);  // the own placement (also if no wide draw was exact)
+      std::visit([&r](const auto& q) { r = rows(q); }, inst->query);
       break;
     }
     case Mode::catalogue: {
@@ -250,10 +263,11 @@ std::vector<std::uint8_t> encode_raw(const Rows& r) {
 }
 
 std::vector<std::uint8_t> encode_family(std::size_t family_index, int k, bool toward,
-                                        std::uint64_t seed) {
+                                        std::uint64_t seed, std::optional<families::WideStyle> wide) {
+  const int placement = wide ? static_cast<int>(*wide) + 1 : 0;
   std::vector<std::uint8_t> out{static_cast<std::uint8_t>(Mode::family),
                                 static_cast<std::uint8_t>(family_index), byte_from_k(k),
-                                static_cast<std::uint8_t>(toward ? 1 : 0)};
+                                static_cast<std::uint8_t>((toward ? 1 : 0) | (placement << 1))};
   for (int i = 0; i < 8; ++i) out.push_back(static_cast<std::uint8_t>(seed >> (8 * i)));
   return out;
 }

@@ -9,25 +9,30 @@
 //              24 bytes: each coordinate an integer in [-8, 8] times 2^scale.
 //   raw        24 doubles, 8 bytes each (little-endian bit patterns; non-finite ones read as 0).
 //   family     1 byte family (of the requested kind, fuzz/families.hpp), 1 byte k (-1..62, or
-//              62..1070 in steps of 16: subnormal perturbations), 1 byte direction (bit 0:
-//              toward), 8 bytes placement seed.
+//              62..1070 in steps of 16: subnormal perturbations), 1 byte direction and
+//              placement (bit 0: toward; (byte >> 1) % 5: 0 the family's own placement, 1..4
+//              families::make_wide with WideStyle 0..3: per-axis scales over the whole double
+//              range), 8 bytes placement seed.
 //   catalogue  2 bytes: an entry of fuzz/catalogue.hpp of the requested kind (with the 2^996,
 //              2^-1060, 2^20 and 2^40 copies).
-// Edits (op % 14): copy a point onto another (shared and repeated vertices), make a vertex
+// Edits (op % 15): copy a point onto another (shared and repeated vertices), make a vertex
 // static, flatten an axis (coplanar), nudge a coordinate by a few ulps, midpoint and
 // reflection of two points (collinear), power-of-two scale, power-of-two translation, a
 // special value (0, -0, subnormals, 1e300, ...), swap points, mirror an axis, copy a
-// coordinate, permute axes, and move a point onto a triangle vertex's or edge's line.
+// coordinate, permute axes, move a point onto a triangle vertex's or edge's line, and scale
+// one axis by a power of two from 2^-1152 to 2^1151 (wide exponents across axes).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "exactccd/types.hpp"
+#include "fuzz/families.hpp"
 
 namespace exactccd::fuzzing {
 
@@ -54,17 +59,20 @@ Mode mode_of(const std::uint8_t* data, std::size_t size);
 bool all_finite(const Rows& r);
 
 /// The largest difference of binary exponents between two nonzero coordinates (0 when fewer
-/// than two are nonzero). The exact paths' cost grows with it: the fuzzers skip queries above
-/// a limit (2^-1074 next to 2^769 costs seconds under the sanitizers).
+/// than two are nonzero; at most 2097, 2^-1074 next to 2^1023). The exact paths' cost grows with
+/// it: the fuzzers skip queries above a limit unless run in the full-range configuration
+/// (fuzz_check.hpp, max_exponent_spread).
 int exponent_spread(const Rows& r);
 
 /// The raw-mode encoding of a query (decodes to exactly r; non-finite coordinates become 0).
 std::vector<std::uint8_t> encode_raw(const Rows& r);
 
 /// The family-mode encoding: the family_index-th family of the kind, k (as close as the k byte
-/// can say: -1..62 exactly), the direction and the placement seed.
+/// can say: -1..62 exactly), the direction, the placement seed, and a wide placement style
+/// (nullopt: the family's own placement).
 std::vector<std::uint8_t> encode_family(std::size_t family_index, int k, bool toward,
-                                        std::uint64_t seed);
+                                        std::uint64_t seed,
+                                        std::optional<families::WideStyle> wide = std::nullopt);
 
 /// The catalogue-mode encoding of the index-th catalogue entry of the kind.
 std::vector<std::uint8_t> encode_catalogue(std::size_t index);

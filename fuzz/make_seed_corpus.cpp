@@ -4,7 +4,14 @@
 //   catcopy-I       catalogue mode: a few of the 2^996 / 2^-1060 / 2^20 / 2^40 copies;
 //   fam-NAME-K-DIR  family mode: every family of the kind, unperturbed and at k = 52,
 //                   toward and away;
-//   grid-*          grid mode with degenerate edits (coplanar, shared vertex, subnormal, 1e300).
+//   famwide-NAME-K-STYLE  family mode, wide placement (families::make_wide): every family
+//                   unperturbed and at k = 20 toward, in two of the four styles (cycling);
+//   wide-*          raw mode: wide-exponent queries an earlier filter answered wrongly (the
+//                   reported stage-1 query and its edge-edge analogue);
+//   grid-*          grid mode with degenerate edits (coplanar, shared vertex, subnormal, 1e300,
+//                   per-axis scales from 2^-1070 to 2^1000).
+// The wide seeds exceed the fuzzers' default exponent-spread limit: only the full-range
+// configuration (docs/fuzzing.md) checks them; tests/test_fuzz_regressions.cpp checks them all.
 // The committed corpus (fuzz/corpus/) is this program's output; CTest checks it is fresh.
 // Usage: make_seed_corpus OUT_DIR
 #include <cstdio>
@@ -54,7 +61,26 @@ void write_kind(const fs::path& dir, bool vertex_face, const Entries& base, std:
                                  (toward ? "-toward" : "-away");
         write(dir / name, fuzzing::encode_family(family_index, k, toward, 12345));
       }
+    for (int k : {families::kUnperturbed, 20}) {
+      const auto style = static_cast<families::WideStyle>((family_index + (k < 0 ? 0 : 1)) %
+                                                          families::kWideStyleCount);
+      const std::string name = "famwide-" + f.name + "-" + (k < 0 ? std::string("u") : std::to_string(k)) +
+                               "-" + families::wide_style_name(style);
+      write(dir / name, fuzzing::encode_family(family_index, k, true, 4242, style));
+    }
     ++family_index;
+  }
+  // The reported stage-1 query (static triangle (0,0,0), (2^200,0,1), (0,2^-538,0), p crossing
+  // its plane inside at t = 1/2) and its edge-edge analogue (tests/test_wide_exponents.cpp).
+  if (vertex_face) {
+    const Vec3 a{0, 0, 0}, b{0x1p200, 0, 1}, c{0, 0x1p-538, 0};
+    write(dir / "wide-reported-stage1",
+          fuzzing::encode_raw({{{0x1p-360, 0x1p-539, 0}, a, b, c, {0x1p-360, 0x1p-539, 0x1p-559}, a, b, c}}));
+  } else {
+    const Vec3 a0{0, 0, 0}, a1{0x1p200, 0, 1};
+    write(dir / "wide-reported-stage1-ee",
+          fuzzing::encode_raw({{a0, a1, {0x1p-360, -0x1p-539, 0}, {0x1p-360, 0x1p-539, 0}, a0, a1,
+                                {0x1p-360, -0x1p-539, 0x1p-559}, {0x1p-360, 0x1p-539, 0x1p-559}}}));
   }
   // Grid mode, scale byte 0 (2^0): a unit-ish configuration with degenerate edits.
   Bytes grid{static_cast<std::uint8_t>(fuzzing::Mode::grid), 0};
@@ -77,6 +103,11 @@ void write_kind(const fs::path& dir, bool vertex_face, const Entries& base, std:
   huge[1] = 15;  // scale 2^996: coordinates near 1e300
   fuzzing::append_edit(huge, 2, 0, 3);
   write(dir / "grid-huge-coplanar", huge);
+  // Edit 14 scales one axis by 2^((b - 128) 9 + (a / 3) % 9): x by 2^-1070, z by 2^1000.
+  Bytes axes = grid;
+  fuzzing::append_edit(axes, 14, 0 + 3 * 1, 9);       // axis 0: (9 - 128) 9 + 1 = -1070
+  fuzzing::append_edit(axes, 14, 2 + 3 * 1, 239);     // axis 2: (239 - 128) 9 + 1 = 1000
+  write(dir / "grid-axis-scales", axes);
 }
 
 }  // namespace

@@ -172,13 +172,38 @@ elseif(CASE STREQUAL "bench_json")
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "bench --json: exit ${rc}\n${err}")
   endif()
-  foreach(key dataset kind method queries mean_ns median_ns fp fn exact_fallbacks)
+  foreach(key dataset kind method queries mean_ns median_ns fp fn fp_fn_against truth_disagrees_with_exact
+          exact_fallbacks)
     string(REGEX MATCHALL "\"${key}\":" found "${out}")
     list(LENGTH found count)
     if(NOT count EQUAL 3)
       message(FATAL_ERROR "bench --json: key ${key} appears ${count} times, expected 3:\n${out}")
     endif()
   endforeach()
+
+elseif(CASE STREQUAL "bench_truth")
+  # bench counts FP and FN against the file's truth column, for the exact methods too, and
+  # reports how often that column disagrees with Method::exact. wrong-truth-vertex-face.csv is
+  # small-vertex-face.csv with the second query's truth flipped to 1 (p passes beside the
+  # triangle at (2, 2, 0): no collision, by hand).
+  run(bench --repetitions 1 --methods filtered,exact --json - ${DATA}/wrong-truth-vertex-face.csv)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "bench on a wrong truth column: exit ${rc}\n${err}")
+  endif()
+  string(REGEX MATCHALL "\"fp\": 0, \"fn\": 1, \"fp_fn_against\": \"file truth column\", \"truth_disagrees_with_exact\": 1"
+         rows "${out}")
+  list(LENGTH rows n)
+  if(NOT n EQUAL 2 OR NOT err MATCHES "disagrees with Method::exact on 1 of 2 queries")
+    message(FATAL_ERROR "bench on a wrong truth column: expected FN 1 and truth_disagrees_with_exact 1 for "
+                        "filtered and exact, and a note on stderr:\n${out}\n${err}")
+  endif()
+  run(bench --repetitions 1 --methods filtered,exact --json - ${small})
+  string(REGEX MATCHALL "\"fp\": 0, \"fn\": 0, \"fp_fn_against\": \"file truth column\", \"truth_disagrees_with_exact\": 0"
+         rows "${out}")
+  list(LENGTH rows n)
+  if(NOT rc EQUAL 0 OR NOT n EQUAL 2 OR err MATCHES "exactccd bench: ")
+    message(FATAL_ERROR "bench on a correct truth column: exit ${rc}\n${out}\n${err}")
+  endif()
 
 elseif(CASE STREQUAL "stability")
   # stability writes the documented CSV; the exact methods have no error.

@@ -1,5 +1,5 @@
 // The fuzzers' property in every build (no clang needed): every committed seed-corpus input,
-// and every input the fuzzers ever found failing (kRegressions, none so far), satisfies
+// and every query an earlier version answered wrongly (kRegressions), satisfies
 // fuzz/fuzz_check.hpp (filtered == exact, identical TOIs, ...). Plus the input decoder's
 // contract (fuzz/fuzz_input.hpp), which the seeds and fuzz-against rely on.
 #include <gtest/gtest.h>
@@ -47,15 +47,126 @@ void check_corpus(const char* kind) {
 TEST(FuzzCorpus, VertexFaceSeedsSatisfyTheProperty) { check_corpus<VertexFaceQuery>("vertex_face"); }
 TEST(FuzzCorpus, EdgeEdgeSeedsSatisfyTheProperty) { check_corpus<EdgeEdgeQuery>("edge_edge"); }
 
-/// Queries the fuzzers found violating the property, minimized, with what failed: the 8 points
-/// in benchmark row order (hex floats, as the fuzzers print them).
+/// Queries an earlier version answered wrongly (found by the fuzzers, minimized, or by the
+/// wide-exponent families), with what failed: the 8 points in benchmark row order (hex floats,
+/// as the fuzzers print them) and the answer when it is known without the library.
 struct Regression {
   const char* what;
   bool vertex_face;
   Rows rows;
+  std::optional<bool> collides;  ///< by hand or by construction; nullopt: only the exact path knows
 };
 const std::vector<Regression> kRegressions = {
-    // None yet: the longest session (docs/fuzzing.md) found no violation.
+    // The fuzzers in the default configuration (spread limit 400, docs/fuzzing.md) found none. Wide-exponent queries the
+    // filtered method answered "no collision" before commit 0aa1a3d (its static volume filter
+    // took a per-operation 2^-1075 as the underflow error, but later products amplify it):
+    // the reported one, its edge-edge analogue (tests/test_wide_exponents.cpp derives both by
+    // hand) and the seven instances of tests/test_wide_exponents.cpp that failed on that
+    // version's filter (all with the sheared style of families::make_wide; answers by
+    // construction). Each collides.
+    {"the reported query (issue 10): a static triangle (0,0,0), (2^200,0,1), (0,2^-538,0); p crosses its plane inside at t = 1/2 (stage 1 false negative before 0aa1a3d)", true,
+     {{{0x1p-360, 0x1p-539, 0x0p+0},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x0p+0, 0x1p-538, 0x0p+0},
+      {0x1p-360, 0x1p-539, 0x1p-559},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x0p+0, 0x1p-538, 0x0p+0}}},
+     true},
+    {"edge-edge analogue of the reported query: an edge along (2^200, 0, 1), a 2^-538-long edge crossing it at t = 1/2 (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x1p-360, -0x1p-539, 0x0p+0},
+      {0x1p-360, 0x1p-539, 0x0p+0},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1p+200, 0x0p+0, 0x1p+0},
+      {0x1p-360, -0x1p-539, 0x1p-559},
+      {0x1p-360, 0x1p-539, 0x1p-559}}},
+     true},
+    {"families::make_wide(vf_vertex_through_edge, k 14, toward, sheared) (stage 1 false negative before 0aa1a3d)", true,
+     {{{0x1.0008p-659, -0x1.0008p+759, 0x1.0018p-877},
+      {0x1p-659, 0x0p+0, 0x0p+0},
+      {0x1.001p-659, -0x1p+760, 0x1.8p-875},
+      {0x1p-659, -0x1p+760, 0x1.8p-875},
+      {0x1.0008p-659, -0x1.0008p+759, 0x1.4006p-875},
+      {0x1p-659, 0x0p+0, 0x0p+0},
+      {0x1.001p-659, -0x1p+760, 0x1.8p-875},
+      {0x1p-659, -0x1p+760, 0x1.8p-875}}},
+     true},
+    {"families::make_wide(vf_nearly_static, unperturbed, sheared): static contact (stage 1 false negative before 0aa1a3d)", true,
+     {{{0x1p-771, 0x1.8p+1013, -0x1.7ffffffff4p-995},
+      {0x0p+0, 0x0p+0, -0x1.8p-995},
+      {0x1p-769, 0x1.8p+1015, -0x1.7ffffffffp-995},
+      {0x0p+0, 0x0p+0, -0x1.7fffffffep-995},
+      {0x1p-771, 0x1.8p+1013, -0x1.7ffffffff4p-995},
+      {0x0p+0, 0x0p+0, -0x1.8p-995},
+      {0x1p-769, 0x1.8p+1015, -0x1.7ffffffffp-995},
+      {0x0p+0, 0x0p+0, -0x1.7fffffffep-995}}},
+     true},
+    {"families::make_wide(vf_large_offset, unperturbed, sheared) (stage 1 false negative before 0aa1a3d)", true,
+     {{{-0x1p+715, 0x1p-596, 0x1.7ffffff8p-488},
+      {0x0p+0, 0x0p+0, 0x1.8p-488},
+      {-0x1p+716, 0x1p-595, 0x1.8000001p-488},
+      {0x0p+0, -0x1p-595, 0x1.8p-488},
+      {-0x1p+715, 0x1p-596, 0x1.80000018p-488},
+      {0x0p+0, 0x0p+0, 0x1.8p-488},
+      {-0x1p+716, 0x1p-595, 0x1.8000001p-488},
+      {0x0p+0, -0x1p-595, 0x1.8p-488}}},
+     true},
+    {"families::make_wide(ee_edge_through_endpoint, k 0, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x1.8p+0, -0x0.0007fffffep-1022, 0x1.00000004p+608},
+      {0x1.8p+0, -0x0.0008000002p-1022, 0x1.fffffff8p+607},
+      {0x1.7fffffffffcp+0, -0x0.0007fffff8p-1022, 0x1p+608},
+      {0x1.80000000004p+0, -0x0.0008000004p-1022, 0x1p+608},
+      {0x1.8p+0, -0x0.0007fffffep-1022, 0x1.00000004p+608},
+      {0x1.8p+0, -0x0.0008000002p-1022, 0x1.fffffff8p+607},
+      {0x1.7fffffffffcp+0, -0x0.0007fffffcp-1022, 0x1p+608},
+      {0x1.80000000004p+0, -0x0.0008000008p-1022, 0x1p+608}}},
+     true},
+    {"families::make_wide(ee_edge_through_endpoint, k 26, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x0p+0, -0x0.003fffffdp-1022, 0x1.0000ep+873},
+      {0x0p+0, 0x0.004000003p-1022, -0x1.fffe4p+872},
+      {0x1p-682, 0x0.001000002p-1022, 0x1.c08p+856},
+      {-0x1p-682, 0x0.001000002p-1022, 0x1.c08p+856},
+      {0x0p+0, -0x0.003fffffdp-1022, 0x1.0000ep+873},
+      {0x0p+0, 0x0.004000003p-1022, -0x1.fffe4p+872},
+      {0x1p-682, 0x0.007000002p-1022, -0x1.ffff1fcp+873},
+      {-0x1p-682, 0x0.007000002p-1022, -0x1.ffff1fcp+873}}},
+     true},
+    {"families::make_wide(ee_grazing, k 2, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{-0x1.bfffp-353, -0x1.8p-866, 0x1.7fffcp+755},
+      {-0x1.c001p-353, -0x1.8p-866, 0x1.80004p+755},
+      {-0x1.c0038p-353, -0x1.8000004p-866, 0x1.8000fp+755},
+      {-0x1.bfff8p-353, -0x1.7fffffep-866, 0x1.7fffdp+755},
+      {-0x1.bfffp-353, -0x1.8p-866, 0x1.7fffcp+755},
+      {-0x1.c001p-353, -0x1.8p-866, 0x1.80004p+755},
+      {-0x1.c004p-353, -0x1.8000004p-866, 0x1.8000fp+755},
+      {-0x1.bffcp-353, -0x1.7fffffap-866, 0x1.7fff1p+755}}},
+     true},
+    {"families::make_wide(ee_contact_at_t1, k 2, toward, sheared) (stage 1 false negative before 0aa1a3d)", false,
+     {{{-0x1.000000000008p+642, 0x1p-572, -0x1p-516},
+      {-0x1.fffffffffffp+641, -0x1p-572, 0x1p-516},
+      {-0x1p+642, -0x1p-573, -0x1p-515},
+      {-0x1p+642, 0x1p-573, -0x1p-515},
+      {-0x1.000000000008p+642, 0x1p-572, -0x1p-516},
+      {-0x1.fffffffffffp+641, -0x1p-572, 0x1p-516},
+      {-0x1p+642, -0x1p-573, 0x1p-517},
+      {-0x1p+642, 0x1p-573, 0x1p-517}}},
+     true},
+    // Found by fuzz_vertex_face in the full-range configuration (EXACTCCD_FUZZ_MAX_SPREAD=2200)
+    // on the pre-0aa1a3d filter in 832 inputs, without the wide-* seeds: with the triangle's b
+    // and c exchanged the filtered method said "no collision" (exact: collides, TOI near 5/6).
+    {"full-range fuzzing, old stage 1: the answer depended on the order of b and c", true,
+     {{{0x1.80000000005p+959, 0x1.3ffff8p-704, 0x1.0cp-448},
+       {0x1.8p+959, 0x1.4p-704, 0x1p-448},
+       {0x1.8p+959, 0x1.3fffep-704, 0x1p-448},
+       {0x1.80000000014p+959, 0x1.4p-704, 0x1.1p-448},
+       {0x1.80000000005p+959, 0x1.3ffff8p-704, 0x1.0cp-448},
+       {0x1.8p+959, 0x1.4p-704, 0x1p-448},
+       {0x1.8p+959, 0x1.3fffep-704, 0x1p-448},
+       {0x1.80000000004p+959, 0x1.4p-704, 0x1.1p-448}}},
+     std::nullopt},
 };
 
 TEST(FuzzRegressions, StayFixed) {
@@ -63,6 +174,12 @@ TEST(FuzzRegressions, StayFixed) {
     const auto violation = reg.vertex_face ? fuzzing::find_violation<VertexFaceQuery>(reg.rows)
                                            : fuzzing::find_violation<EdgeEdgeQuery>(reg.rows);
     EXPECT_FALSE(violation) << reg.what << "\n" << violation.value_or("");
+    if (!reg.collides) continue;
+    for (Method m : {Method::filtered, Method::exact}) {
+      const bool got = reg.vertex_face ? vertex_face_ccd(from_rows<VertexFaceQuery>(reg.rows), m)
+                                       : edge_edge_ccd(from_rows<EdgeEdgeQuery>(reg.rows), m);
+      EXPECT_EQ(got, *reg.collides) << reg.what << (m == Method::exact ? " (exact)" : " (filtered)");
+    }
   }
 }
 
@@ -99,6 +216,27 @@ TEST(FuzzInput, FamilyModeIsTheFamilysInstance) {
   }
 }
 
+TEST(FuzzInput, FamilyModeWidePlacementIsMakeWide) {
+  std::size_t index = 0;
+  int wide = 0;
+  for (const families::Family& f : families::all_families()) {
+    if (f.vertex_face) continue;
+    for (int s = 0; s < families::kWideStyleCount; ++s) {
+      const auto style = static_cast<families::WideStyle>(s);
+      const auto bytes = fuzzing::encode_family(index, 8, true, 77, style);
+      const Rows got = fuzzing::decode(bytes.data(), bytes.size(), false);
+      std::mt19937_64 rng(77);
+      const auto inst = families::make_wide(f, 8, true, style, rng);
+      ASSERT_TRUE(inst.has_value()) << f.name << " " << families::wide_style_name(style);
+      const Rows want = rows(std::get<EdgeEdgeQuery>(inst->query));
+      EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << f.name << " " << families::wide_style_name(style);
+      wide += fuzzing::exponent_spread(got) > 1000;
+    }
+    ++index;
+  }
+  EXPECT_GE(wide, 4) << "wide placements decode to wide queries (9 of the 40 here span > 1000 bits)";
+}
+
 TEST(FuzzInput, CatalogueModeIsTheEntry) {
   const auto cases = catalogue::edge_edge_cases();
   for (std::size_t i : {std::size_t{0}, cases.size() / 2, cases.size() - 1}) {
@@ -133,6 +271,12 @@ TEST(FuzzInput, EditsBuildDegeneracies) {
   EXPECT_EQ(nudged[0].x, std::nextafter(base[0].x, 1e300));
   const Rows special = edited(8, 5, 2);  // coordinate 5 := 2^-1074
   EXPECT_EQ(special[1].z, 0x1p-1074);
+  const Rows scaled = edited(14, 2 + 3 * 1, 239);  // axis 2 times 2^((239 - 128) 9 + 1) = 2^1000
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(scaled[i].z, std::ldexp(base[i].z, 1000));
+    EXPECT_EQ(scaled[i].x, base[i].x);
+  }
+  EXPECT_EQ(edited(14, 0, 0)[3].x, std::ldexp(base[3].x, -1152));  // the bottom of the range
 }
 
 TEST(FuzzInput, EveryInputDecodesAndRandomInputsAreFinite) {
