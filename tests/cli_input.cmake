@@ -88,7 +88,7 @@ if(CASE STREQUAL "option_values")
   run(compare --kind xx --answers ${WORK}/a.txt ${small})
   expect_input_error("compare --kind xx" "--kind needs one of vf, ee")
   run(generate sim --truth naive --out ${WORK}/gen --scene cloth)
-  expect_input_error("generate --truth naive" "--truth needs one of filtered, exact")
+  expect_input_error("generate --truth naive" "--truth needs one of exact, filtered")
   run(check --threads)
   expect_input_error("check --threads without a value" "option --threads needs a value")
   # Values at the ends of the documented ranges are accepted.

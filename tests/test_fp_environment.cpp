@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "filter/fp_environment.hpp"
 #include "io/benchmark_csv.hpp"
 #include "io/obj.hpp"
+#include "fuzz/families.hpp"
 
 #if defined(__x86_64__) || defined(_M_X64)
 #include <xmmintrin.h>
@@ -204,6 +206,25 @@ const std::vector<Query>& all_queries() {
     for (std::size_t i = 0; i < 8; ++i) rational[i] = {wide[i].x, wide[i].y, wide[i].z};
     out.push_back({"wide vertex-face", true, rational, wide});
     out.push_back({"wide edge-edge", false, rational, wide});
+    // Wide-exponent degenerate families (families::make_wide: per-axis scales from the
+    // subnormal to the overflow end, translations, shears), every family and style, both
+    // directions, k = 8 and 52: where FTZ/DAZ and directed rounding broke most answers.
+    std::mt19937_64 rng(20261202);
+    for (const families::Family& f : families::all_families())
+      for (int style = 0; style < families::kWideStyleCount; ++style)
+        for (int k : {8, 52})
+          for (bool toward : {true, false}) {
+            const auto inst = families::make_wide(f, k, toward, static_cast<families::WideStyle>(style), rng);
+            if (!inst) continue;
+            std::visit([&](const auto& q) {
+              const auto d = rows(q);
+              std::array<RationalVec3, 8> r;
+              for (std::size_t i = 0; i < 8; ++i) r[i] = {d[i].x, d[i].y, d[i].z};
+              out.push_back({f.name + " wide " + families::wide_style_name(static_cast<families::WideStyle>(style)) +
+                                 " k=" + std::to_string(k) + (toward ? " toward" : " away"),
+                             f.vertex_face, r, d});
+            }, inst->query);
+          }
     return out;
   }();
   return queries;

@@ -1,5 +1,6 @@
 #include "exact/stack_budget.hpp"
 
+#include <cstdint>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,26 @@ constexpr std::size_t kCallerBudget = std::size_t{512} << 10;
 constexpr std::size_t kBaseStack = std::size_t{1} << 20;       // everything but the recursion
 constexpr std::size_t kDepthMargin = 64;
 
+/// Bytes left on the calling thread's stack below this frame, or 0 when it cannot be told.
+/// glibc reads the main thread's stack from its limit and /proc/self/maps (tens of
+/// microseconds), so this is asked only for deep isolations.
+std::size_t remaining_stack() {
+#if defined(__GLIBC__)
+  pthread_attr_t attr;
+  if (pthread_getattr_np(pthread_self(), &attr) != 0) return 0;
+  void* low = nullptr;
+  std::size_t size = 0;
+  const int got = pthread_attr_getstack(&attr, &low, &size);
+  pthread_attr_destroy(&attr);
+  if (got != 0) return 0;
+  const char here = 0;
+  const auto sp = reinterpret_cast<std::uintptr_t>(&here), bottom = reinterpret_cast<std::uintptr_t>(low);
+  return sp > bottom ? sp - bottom : 0;
+#else
+  return 0;
+#endif
+}
+
 }  // namespace
 
 std::size_t descartes_depth_bound(std::size_t coefficient_bits) {
@@ -37,7 +58,10 @@ std::size_t descartes_depth_bound(std::size_t coefficient_bits) {
 }
 
 void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& work) {
-  if (depth * kFrameBytes <= kCallerBudget) {
+  const std::size_t need = depth * kFrameBytes;
+  // Inline when the recursion fits half of a 1 MB stack, or what this thread has left (with a
+  // reserve for everything else): a main thread or a default glibc thread has 8 MB.
+  if (need <= kCallerBudget || need + kBaseStack <= remaining_stack()) {
     work();
     return;
   }
@@ -46,7 +70,7 @@ void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& wo
     const std::function<void()>* work;
     std::exception_ptr error;
   } job{&work, nullptr};
-  const std::size_t bytes = kBaseStack + depth * kFrameBytes;
+  const std::size_t bytes = kBaseStack + need;
   pthread_attr_t attr;
   if (pthread_attr_init(&attr) != 0) throw std::runtime_error("exactccd: pthread_attr_init failed");
   const int sized = pthread_attr_setstacksize(&attr, bytes);
