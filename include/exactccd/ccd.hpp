@@ -98,4 +98,13 @@ inline std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, St
   return edge_edge_toi(q, method, counters);
 }
 
+/// The exact answer for a rational query of either kind; see vertex_face_ccd(const RationalVertexFaceQuery&).
+inline bool ccd(const RationalVertexFaceQuery& q) { return vertex_face_ccd(q); }
+/// See ccd(const RationalVertexFaceQuery&).
+inline bool ccd(const RationalEdgeEdgeQuery& q) { return edge_edge_ccd(q); }
+/// The exact TOI for a rational query of either kind.
+inline std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q) { return vertex_face_toi(q); }
+/// See toi(const RationalVertexFaceQuery&).
+inline std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q) { return edge_edge_toi(q); }
+
 }  // namespace exactccd

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "exactccd/plugin.h"
 #include "exactccd/types.hpp"
 
 namespace exactccd::kinds {
@@ -24,6 +25,7 @@ struct VertexFace {
   static constexpr std::string_view name = "vertex-face";  ///< file names, tables, JSON
   static constexpr std::string_view short_name = "vf";     ///< the CLI's --kind value
   static constexpr std::string_view function = "vertex_face";  ///< C++ and C API stem
+  static constexpr std::string_view plugin_symbol = EXACTCCD_PLUGIN_VF_SYMBOL;  ///< plugin.h
   static constexpr int points = 4;  ///< moving points; a query has 2 * points rows
   static constexpr std::array<std::string_view, points> point_names{"p", "a", "b", "c"};
   /// The volume V = (b - a) . ((c - a) x (p - a)) as rows {base, u, v, w}: V = det[u - base,
@@ -38,6 +40,7 @@ struct EdgeEdge {
   static constexpr std::string_view name = "edge-edge";
   static constexpr std::string_view short_name = "ee";
   static constexpr std::string_view function = "edge_edge";
+  static constexpr std::string_view plugin_symbol = EXACTCCD_PLUGIN_EE_SYMBOL;
   static constexpr int points = 4;
   static constexpr std::array<std::string_view, points> point_names{"a0", "a1", "b0", "b1"};
   /// V = (a1 - a0) . ((b0 - a0) x (b1 - a0)).

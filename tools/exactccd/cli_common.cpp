@@ -16,14 +16,43 @@
 
 namespace exactccd::cli {
 
+std::vector<QueryKind> all_kinds() {
+  std::vector<QueryKind> out;
+  std::size_t i = 0;
+  kinds::for_each_kind([&](auto) { out.push_back(QueryKind{i++}); });
+  return out;
+}
+
+std::string kind_name(QueryKind k) {
+  return visit_kind(k, [](auto kind) { return std::string(decltype(kind)::short_name); });
+}
+
+std::string kind_long_name(QueryKind k) {
+  return visit_kind(k, [](auto kind) { return std::string(decltype(kind)::name); });
+}
+
+namespace {
+
+/// "vf|ee" from the kinds' short names.
+std::string short_names(const char* separator) {
+  std::string out;
+  for (QueryKind k : all_kinds()) out += (out.empty() ? "" : separator) + kind_name(k);
+  return out;
+}
+
+}  // namespace
+
 QueryKind parse_kind(const std::string& s) {
-  if (s == "vf" || s == "vertex-face") return QueryKind::vertex_face;
-  if (s == "ee" || s == "edge-edge") return QueryKind::edge_edge;
-  throw UsageError("unknown kind '" + s + "' (expected vf or ee)");
+  for (QueryKind k : all_kinds())
+    if (s == kind_name(k) || s == kind_long_name(k)) return k;
+  throw UsageError("unknown kind '" + s + "' (expected " + short_names(" or ") + ")");
 }
 
 OptionSpec kind_option(const std::string& help) {
-  return choice_option("--kind", "vf|ee", {"vf", "ee", "vertex-face", "edge-edge"}, "", help);
+  std::vector<std::string> choices;
+  for (QueryKind k : all_kinds()) choices.push_back(kind_name(k));
+  for (QueryKind k : all_kinds()) choices.push_back(kind_long_name(k));
+  return choice_option("--kind", short_names("|"), choices, "", help);
 }
 
 std::optional<QueryKind> kind_of(const ParsedOptions& options) {
@@ -31,14 +60,18 @@ std::optional<QueryKind> kind_of(const ParsedOptions& options) {
   return parse_kind(options.text("--kind"));
 }
 
-std::string kind_name(QueryKind k) { return k == QueryKind::vertex_face ? "vf" : "ee"; }
-
 std::optional<QueryKind> kind_from_path(const std::string& path) {
   // The occurrence nearest the file name wins: "edge-edge/run-vertex-face.csv" is vertex-face.
-  const auto vf = path.rfind("vertex-face"), ee = path.rfind("edge-edge");
-  if (vf == std::string::npos && ee == std::string::npos) return std::nullopt;
-  if (ee == std::string::npos || (vf != std::string::npos && vf > ee)) return QueryKind::vertex_face;
-  return QueryKind::edge_edge;
+  std::optional<QueryKind> best;
+  std::size_t best_at = 0;
+  for (QueryKind k : all_kinds()) {
+    const std::size_t at = path.rfind(kind_long_name(k));
+    if (at != std::string::npos && (!best || at > best_at)) {
+      best = k;
+      best_at = at;
+    }
+  }
+  return best;
 }
 
 const std::vector<Method>& all_methods() {
@@ -77,9 +110,12 @@ Method parse_method(const std::string& s) {
 
 Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
   if (!kind) kind = kind_from_path(path);
-  if (!kind)
-    throw UsageError("cannot infer the query kind of '" + path +
-                     "' (no 'vertex-face' or 'edge-edge' in the path): pass --kind vf|ee");
+  if (!kind) {
+    std::string names;
+    for (QueryKind k : all_kinds()) names += (names.empty() ? "'" : " or '") + kind_long_name(k) + "'";
+    throw UsageError("cannot infer the query kind of '" + path + "' (no " + names +
+                     " in the path): pass --kind " + short_names("|"));
+  }
   io::InputFile file(path);
   Dataset d;
   d.path = path;
@@ -121,27 +157,20 @@ std::optional<TimeInterval> collides_placeholder(bool collides) {
 
 std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method method,
                                       StageCounters* counters, bool want_toi) {
-  const bool vf = d.kind == QueryKind::vertex_face;
-  const auto& exact_rows = d.doubles[i];
-  if (!exact_rows && is_exact_method(method)) {  // not doubles: the rational exact path
-    if (counters) ++counters->exact;
-    const auto& r = d.queries.rows[i];
-    if (vf) {
-      const auto q = from_rows<RationalVertexFaceQuery>(r);
-      return want_toi ? vertex_face_toi(q) : collides_placeholder(vertex_face_ccd(q));
+  return visit_kind(d.kind, [&](auto kind) {
+    using Kind = decltype(kind);
+    const auto& exact_rows = d.doubles[i];
+    if (!exact_rows && is_exact_method(method)) {  // not doubles: the rational exact path
+      if (counters) ++counters->exact;
+      const auto q = from_rows<typename Kind::template Query<mpq_class>>(d.queries.rows[i]);
+      return want_toi ? toi(q) : collides_placeholder(ccd(q));
     }
-    const auto q = from_rows<RationalEdgeEdgeQuery>(r);
-    return want_toi ? edge_edge_toi(q) : collides_placeholder(edge_edge_ccd(q));
-  }
-  const std::array<Vec3, 8> rows = exact_rows ? *exact_rows : io::nearest_double_rows(d.queries.rows[i]);
-  StageCounters unused;
-  StageCounters& c = counters ? *counters : unused;
-  if (vf) {
-    const auto q = from_rows<VertexFaceQuery>(rows);
-    return want_toi ? vertex_face_toi(q, method, c) : collides_placeholder(vertex_face_ccd(q, method, c));
-  }
-  const auto q = from_rows<EdgeEdgeQuery>(rows);
-  return want_toi ? edge_edge_toi(q, method, c) : collides_placeholder(edge_edge_ccd(q, method, c));
+    const std::array<Vec3, 8> rows = exact_rows ? *exact_rows : io::nearest_double_rows(d.queries.rows[i]);
+    StageCounters unused;
+    StageCounters& c = counters ? *counters : unused;
+    const auto q = from_rows<typename Kind::template Query<double>>(rows);
+    return want_toi ? toi(q, method, c) : collides_placeholder(ccd(q, method, c));
+  });
 }
 
 OptionSpec threads_option(const std::string& default_value, const std::string& help) {

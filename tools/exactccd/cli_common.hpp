@@ -12,6 +12,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "io/benchmark_csv.hpp"
+#include "kinds/primitive_kinds.hpp"
 #include "options.hpp"
 
 namespace exactccd::cli {
@@ -28,18 +29,59 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class QueryKind { vertex_face, edge_edge };
+/// A primitive kind at run time: the position of its description in kinds::for_each_kind
+/// (lib/kinds/primitive_kinds.hpp), from which every name below is derived.
+struct QueryKind {
+  std::size_t index = 0;
+  friend bool operator==(QueryKind a, QueryKind b) { return a.index == b.index; }
+  friend bool operator!=(QueryKind a, QueryKind b) { return a.index != b.index; }
+};
 
-/// "vf" / "ee" (also "vertex-face" / "edge-edge").
+/// The run-time kind of a kind's description.
+template <class Kind>
+QueryKind query_kind() {
+  std::size_t i = 0, found = 0;
+  kinds::for_each_kind([&](auto k) {
+    if (std::is_same_v<decltype(k), Kind>) found = i;
+    ++i;
+  });
+  return QueryKind{found};
+}
+
+/// f(Kind{}) for the kind's description (every kind's call must return the same type).
+template <class F>
+auto visit_kind(QueryKind kind, F&& f) {
+  using R = decltype(f(kinds::VertexFace{}));
+  if constexpr (std::is_void_v<R>) {
+    std::size_t i = 0;
+    kinds::for_each_kind([&](auto k) {
+      if (i++ == kind.index) f(k);
+    });
+  } else {
+    std::optional<R> out;
+    std::size_t i = 0;
+    kinds::for_each_kind([&](auto k) {
+      if (i++ == kind.index) out.emplace(f(k));
+    });
+    return std::move(*out);
+  }
+}
+
+/// Every kind, in for_each_kind order.
+std::vector<QueryKind> all_kinds();
+/// A kind's --kind value ("vf", "ee", ...).
+std::string kind_name(QueryKind k);
+/// A kind's long name ("vertex-face", ...), as in file names.
+std::string kind_long_name(QueryKind k);
+/// A --kind value: a short or a long name of a kind.
 QueryKind parse_kind(const std::string& s);
-/// The `--kind vf|ee` option (also vertex-face, edge-edge), with the given help.
+/// The `--kind` option (every kind's short and long names), with the given help.
 OptionSpec kind_option(const std::string& help);
 /// The kind given by `--kind`, if any.
 std::optional<QueryKind> kind_of(const ParsedOptions& options);
-std::string kind_name(QueryKind k);  ///< "vf" or "ee"
 
-/// The kind named by a path containing "vertex-face" or "edge-edge", if any; when both occur,
-/// the one nearer the end of the path (the file name over its folders).
+/// The kind whose long name ("vertex-face", "edge-edge", ...) occurs in a path, if any; when
+/// several occur, the one nearest the end of the path (the file name over its folders).
 std::optional<QueryKind> kind_from_path(const std::string& path);
 
 /// Every method, baselines first: naive, naive-tolerance, mpfr24, mpfr53, mpfr113, mpfr256,

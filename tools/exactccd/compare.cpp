@@ -71,13 +71,13 @@ int run_compare(int argc, char** argv) {
   std::vector<std::string> lines;
   for (std::size_t i = 0; i < d.queries.size(); ++i) {
     const auto& r = d.queries.rows[i];
-    const bool vf = d.kind == QueryKind::vertex_face;
-    const bool exact = vf ? vertex_face_ccd(from_rows<RationalVertexFaceQuery>(r))
-                          : edge_edge_ccd(from_rows<RationalEdgeEdgeQuery>(r));
+    const auto [exact, labels] = visit_kind(d.kind, [&](auto kind) {
+      const auto q = from_rows<typename decltype(kind)::template Query<mpq_class>>(r);
+      const bool collides = ccd(q);
+      return std::pair(collides, theirs[i] == collides ? std::vector<std::string>{} : exact::degeneracy_categories(q));
+    });
     if (theirs[i] == exact) continue;
     (theirs[i] ? fp : fn)++;
-    const auto labels = vf ? exact::degeneracy_categories(from_rows<RationalVertexFaceQuery>(r))
-                           : exact::degeneracy_categories(from_rows<RationalEdgeEdgeQuery>(r));
     lines.push_back(std::to_string(i) + (theirs[i] ? " FP " : " FN ") + exact::join_categories(labels));
   }
   std::printf("queries %zu, false positives %zu, false negatives %zu\n", d.queries.size(), fp, fn);

@@ -68,7 +68,7 @@ bits) while the same disagreement persists.
 class Plugin {
  public:
   Plugin(const std::string& path, QueryKind kind)
-      : symbol_(kind == QueryKind::vertex_face ? EXACTCCD_PLUGIN_VF_SYMBOL : EXACTCCD_PLUGIN_EE_SYMBOL) {
+      : symbol_(visit_kind(kind, [](auto k) { return decltype(k)::plugin_symbol.data(); })) {
     // dlopen searches the library path for a bare name: "x.so" means the file ./x.so here.
     const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
     handle_ = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -365,8 +365,8 @@ int run_fuzz_against(int argc, char** argv) {
   const std::string plugin_path = options.positionals()[0];
 
   const Plugin plugin(plugin_path, *kind);
-  const bool vf = *kind == QueryKind::vertex_face;
-  const std::string kind_suffix = vf ? "vertex-face" : "edge-edge";
+  const bool vf = *kind == query_kind<kinds::VertexFace>();  // the fuzz decoder's kind flag
+  const std::string kind_suffix = kind_long_name(*kind);
   prepare_output_directory(out_dir);
 
   const Groups groups = make_groups(vf);
