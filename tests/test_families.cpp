@@ -11,31 +11,17 @@
 namespace exactccd::families {
 namespace {
 
+// One call for either kind: the ccd()/toi() overloads on the query type.
 bool exact_answer(const AnyQuery& q) {
-  return std::visit([](const auto& x) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(x)>, VertexFaceQuery>)
-      return vertex_face_ccd(x, Method::exact);
-    else
-      return edge_edge_ccd(x, Method::exact);
-  }, q);
+  return std::visit([](const auto& x) { return ccd(x, Method::exact); }, q);
 }
 
 std::optional<TimeInterval> toi(const AnyQuery& q, Method m) {
-  return std::visit([m](const auto& x) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(x)>, VertexFaceQuery>)
-      return vertex_face_toi(x, m);
-    else
-      return edge_edge_toi(x, m);
-  }, q);
+  return std::visit([m](const auto& x) { return exactccd::toi(x, m); }, q);
 }
 
 bool filtered_answer(const AnyQuery& q) {
-  return std::visit([](const auto& x) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(x)>, VertexFaceQuery>)
-      return vertex_face_ccd(x, Method::filtered);
-    else
-      return edge_edge_ccd(x, Method::filtered);
-  }, q);
+  return std::visit([](const auto& x) { return ccd(x, Method::filtered); }, q);
 }
 
 class FamilyTest : public ::testing::TestWithParam<std::string> {};

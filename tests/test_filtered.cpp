@@ -121,22 +121,20 @@ struct Answers {
   std::optional<TimeInterval> toi;
 };
 
+/// f(query) for the test query as its kind's double query (the ccd()/toi() overloads take
+/// either kind).
+template <class F>
+auto with_query(const TestQuery& q, F&& f) {
+  if (q.kind == Kind::vertex_face) return f(from_rows<VertexFaceQuery>(q.rows));
+  return f(from_rows<EdgeEdgeQuery>(q.rows));
+}
+
 bool call_ccd(const TestQuery& q, Method m, StageCounters* counters) {
-  if (q.kind == Kind::vertex_face) {
-    const auto query = from_rows<VertexFaceQuery>(q.rows);
-    return counters ? vertex_face_ccd(query, m, *counters) : vertex_face_ccd(query, m);
-  }
-  const auto query = from_rows<EdgeEdgeQuery>(q.rows);
-  return counters ? edge_edge_ccd(query, m, *counters) : edge_edge_ccd(query, m);
+  return with_query(q, [&](const auto& query) { return counters ? ccd(query, m, *counters) : ccd(query, m); });
 }
 
 std::optional<TimeInterval> call_toi(const TestQuery& q, Method m, StageCounters* counters) {
-  if (q.kind == Kind::vertex_face) {
-    const auto query = from_rows<VertexFaceQuery>(q.rows);
-    return counters ? vertex_face_toi(query, m, *counters) : vertex_face_toi(query, m);
-  }
-  const auto query = from_rows<EdgeEdgeQuery>(q.rows);
-  return counters ? edge_edge_toi(query, m, *counters) : edge_edge_toi(query, m);
+  return with_query(q, [&](const auto& query) { return counters ? toi(query, m, *counters) : toi(query, m); });
 }
 
 /// Checks that the rounding mode is round-to-nearest; restores it (so one failure does not
