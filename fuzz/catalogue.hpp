@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::catalogue {

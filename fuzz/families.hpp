@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::families {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "io/benchmark_csv.hpp"
 
 namespace exactccd::catalogue {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 
 namespace exactccd::families {
 namespace {

@@ -38,6 +38,7 @@
 #include <vector>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "filter/fp_environment.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"

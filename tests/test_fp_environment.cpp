@@ -24,6 +24,7 @@
 #include "exactccd/eigen.hpp"
 #include "exactccd/exactccd.h"
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "filter/fp_environment.hpp"
 #include "io/benchmark_csv.hpp"
 #include "io/obj.hpp"

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "io/benchmark_csv.hpp"
 
 namespace exactccd {

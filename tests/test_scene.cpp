@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "scene/procedural_scenes.hpp"
 #include "scene_support.hpp"
 

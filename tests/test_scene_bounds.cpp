@@ -8,6 +8,7 @@
 #include <random>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene/time_bounds.hpp"
 #include "test_support.hpp"

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 
 namespace exactccd {
 namespace {

@@ -10,6 +10,7 @@
 
 #include "contact/contact_rule.hpp"
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "filter/volume_sign.hpp"
 
 namespace exactccd {

@@ -16,6 +16,7 @@
 
 #include "exactccd/exactccd.h"
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "fuzz/families.hpp"
 #include "fuzz/fuzz_input.hpp"
 

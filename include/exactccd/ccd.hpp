@@ -1,4 +1,5 @@
 // exactccd: exact continuous collision detection for linearly moving primitives.
+// (Queries with rational coordinates: exactccd/rational.hpp, which needs GMP's headers.)
 //
 // The contract: for finite double or rational inputs every function answers as if computed
 // in exact real arithmetic (except with Method::naive, the non-robust textbook baseline).
@@ -37,12 +38,6 @@ bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method = Method::filtered);
 /// As above, and counts in `counters` which stage of the filtered method decided the query.
 bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method, StageCounters& counters);
 
-/// Exact vertex-face CCD for rational coordinates.
-bool vertex_face_ccd(const RationalVertexFaceQuery& q);
-
-/// Exact edge-edge CCD for rational coordinates.
-bool edge_edge_ccd(const RationalEdgeEdgeQuery& q);
-
 /// Earliest time of impact of a vertex-face query: the smallest t in [0, 1] at which p(t) is
 /// in the closed triangle, enclosed in the tightest double interval [lo, hi] (lo == hi when
 /// that time is a double, hi == nextafter(lo, +inf) otherwise), or std::nullopt when the
@@ -61,12 +56,6 @@ std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q,
 /// As above, and counts in `counters` which stage decided the query.
 std::optional<TimeInterval> edge_edge_toi(const EdgeEdgeQuery& q, Method method,
                                           StageCounters& counters);
-
-/// Earliest time of impact of a vertex-face query with rational coordinates.
-std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q);
-
-/// Earliest time of impact of an edge-edge query with rational coordinates.
-std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q);
 
 /// Overloads on the query type, for code that handles every kind alike (templates): the same
 /// functions as vertex_face_ccd / edge_edge_ccd and vertex_face_toi / edge_edge_toi.
@@ -97,14 +86,5 @@ inline std::optional<TimeInterval> toi(const VertexFaceQuery& q, Method method, 
 inline std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, StageCounters& counters) {
   return edge_edge_toi(q, method, counters);
 }
-
-/// The exact answer for a rational query of either kind; see vertex_face_ccd(const RationalVertexFaceQuery&).
-inline bool ccd(const RationalVertexFaceQuery& q) { return vertex_face_ccd(q); }
-/// See ccd(const RationalVertexFaceQuery&).
-inline bool ccd(const RationalEdgeEdgeQuery& q) { return edge_edge_ccd(q); }
-/// The exact TOI for a rational query of either kind.
-inline std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q) { return vertex_face_toi(q); }
-/// See toi(const RationalVertexFaceQuery&).
-inline std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q) { return edge_edge_toi(q); }
 
 }  // namespace exactccd

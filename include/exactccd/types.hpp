@@ -6,11 +6,11 @@
 #pragma once
 
 #include <array>
-#include <gmpxx.h>
 
 namespace exactccd {
 
-/// A point or vector with three coordinates of number type T (double or mpq_class).
+/// A point or vector with three coordinates of number type T (double; mpq_class in
+/// exactccd/rational.hpp).
 template <class T>
 struct Vec3T {
   T x;  ///< first coordinate
@@ -19,7 +19,6 @@ struct Vec3T {
 };
 
 using Vec3 = Vec3T<double>;             ///< double coordinates
-using RationalVec3 = Vec3T<mpq_class>;  ///< exact rational coordinates (GMP)
 
 /// Vertex-face query: point p against triangle (a, b, c), each at t = 0 and t = 1.
 /// Member order is the benchmark row order: p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1.
@@ -52,8 +51,6 @@ struct EdgeEdgeQueryT {
 
 using VertexFaceQuery = VertexFaceQueryT<double>;
 using EdgeEdgeQuery = EdgeEdgeQueryT<double>;
-using RationalVertexFaceQuery = VertexFaceQueryT<mpq_class>;
-using RationalEdgeEdgeQuery = EdgeEdgeQueryT<mpq_class>;
 
 /// The eight points of a query in benchmark row order (the four vertices at t0, then at t1).
 template <class T>

@@ -1,5 +1,6 @@
 // The public entry points: input validation and dispatch to a method.
 #include "exactccd/ccd.hpp"
+#include "exactccd/rational.hpp"
 
 #include <cmath>
 #include <stdexcept>

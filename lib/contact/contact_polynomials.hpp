@@ -12,6 +12,7 @@
 
 #include "contact/polynomial.hpp"
 #include "contact/vec3_ops.hpp"
+#include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::contact {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::exact {

@@ -6,6 +6,7 @@
 
 #include <optional>
 
+#include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::exact {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 
+#include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::exact {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 #include "io/input_file.hpp"  // InputError
 

@@ -2,6 +2,11 @@
 #include <exactccd/exactccd.h>
 #include <exactccd/exactccd.hpp>
 
+// The double API needs no GMP headers (rational queries are in exactccd/rational.hpp).
+#ifdef __GMP_PLUSPLUS__
+#error "exactccd's double API pulled in gmpxx.h"
+#endif
+
 int main() {
   const exactccd::VertexFaceQuery q{{0.25, 0.25, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
                                     {0.25, 0.25, -1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

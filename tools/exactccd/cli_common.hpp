@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
 #include "io/benchmark_csv.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "options.hpp"
