@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "io/input_file.hpp"
+#include "scene/parallel.hpp"
 
 namespace exactccd::cli {
 
@@ -198,41 +199,15 @@ std::pair<std::size_t, std::size_t> BatchOptions::shard_range(std::size_t total)
 
 unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
                       const std::function<void(std::size_t)>& task, const char* label) {
-  std::atomic<std::size_t> next{begin}, done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto run_one = [&](std::size_t i) {
-    try {
-      task(i);
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next = end;  // stop handing out work
-    }
-    done.fetch_add(1);
-  };
-  const auto worker = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < end;) run_one(i);
-  };
-  // No more threads than indices; when the system refuses one (std::system_error: a thread
-  // limit, no memory for its stack; std::bad_alloc for its state), the threads started so far
-  // do all the work.
-  const std::size_t wanted = std::min<std::size_t>(std::max(1u, threads), end > begin ? end - begin : 1);
-  std::vector<std::thread> pool;
-  pool.reserve(wanted - 1);
-  for (std::size_t t = 1; t < wanted; ++t) {
-    try {
-      pool.emplace_back(worker);
-    } catch (const std::exception&) {
-      break;
-    }
-  }
-  // The calling thread works too, and draws the progress bar between queries.
+  // The library's pool (scene::parallel_chunks: dynamic chunks, the first exception stops the
+  // loop and is rethrown, fewer threads when the system refuses one), one index per chunk; the
+  // calling thread (worker 0) also draws the progress bar between its indices.
+  const std::size_t total = end > begin ? end - begin : 0;
+  std::atomic<std::size_t> done{0};
   const bool tty = isatty(fileno(stderr)) != 0;
   const double start = now_seconds();
   double last_draw = start;
   bool drawn = false;
-  const std::size_t total = end > begin ? end - begin : 0;
   const auto draw = [&](std::size_t finished) {
     constexpr int kWidth = 40;
     const int filled = total ? static_cast<int>(kWidth * finished / total) : kWidth;
@@ -241,23 +216,24 @@ unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
     std::fflush(stderr);
     drawn = true;
   };
-  for (std::size_t i; (i = next.fetch_add(1)) < end;) {
-    run_one(i);
-    if (tty) {
+  const unsigned used = scene::parallel_chunks(total, std::max(1u, threads), 1,
+                                               [&](std::size_t b, std::size_t e, unsigned worker) {
+    for (std::size_t i = b; i < e; ++i) task(begin + i);
+    done.fetch_add(e - b);
+    if (worker == 0 && tty) {
       const double now = now_seconds();
       if (now - start > 2.0 && now - last_draw > 0.2) {
         draw(done.load());
         last_draw = now;
       }
     }
-  }
-  for (auto& t : pool) t.join();
+    return true;
+  });
   if (drawn) {
     draw(done.load());
     std::fputc('\n', stderr);
   }
-  if (failure) std::rethrow_exception(failure);
-  return static_cast<unsigned>(pool.size() + 1);
+  return used;
 }
 
 std::string json_string(const std::string& s) {

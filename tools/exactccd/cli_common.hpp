@@ -15,6 +15,7 @@
 #include "io/benchmark_csv.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "options.hpp"
+#include "scene/parallel.hpp"
 
 namespace exactccd::cli {
 
@@ -129,7 +130,7 @@ std::string json_string(const std::string& s);
 
 /// The largest --threads of any subcommand: a documented range (1..kMaxThreads), not a
 /// resource the run may fail to get (fewer threads are used when the system gives fewer).
-constexpr long long kMaxThreads = 1024;
+constexpr long long kMaxThreads = scene::kMaxThreads;  // the library's pool's limit
 /// The largest N of --shard I/N.
 constexpr long long kMaxShards = 1000000;
 
