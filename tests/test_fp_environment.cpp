@@ -374,6 +374,29 @@ TEST_P(EveryEnvironment, QueriesGiveDefaultAnswersAndLeaveTheEnvironment) {
   EXPECT_TRUE(control_state() == installed);
 }
 
+// Status flags: a caller in a non-default environment finds its flags as it left them (the
+// guard restores MXCSR and the x87 environment whole, or the whole fenv), although the
+// filters raise inexact, underflow and overflow inside, and the long-double guesses raise x87
+// flags. Every environment of the list is non-default.
+TEST_P(EveryEnvironment, StatusFlagsAreAsTheCallerLeftThem) {
+  const Environment env = GetParam();
+  if (!supported(env)) GTEST_SKIP() << "cannot install " << env.name << " on this platform";
+  const RestoreDefault restore;
+  install(env);
+  std::feclearexcept(FE_ALL_EXCEPT);
+  // A query through the interval stage and the TOI narrowing (long double Newton guess), and
+  // one through the integer stage (a vertex hitting a triangle vertex exactly).
+  const VertexFaceQuery hit{{0.3, 0.2, 1.0},   {0.0, 0.0, 0.0}, {1.0, 0.1, 0.0}, {0.1, 1.0, 0.05},
+                            {0.31, 0.21, -0.7}, {0.0, 0.0, 0.1}, {1.0, 0.1, 0.1}, {0.1, 1.0, 0.1}};
+  const VertexFaceQuery through_vertex{{0.0, 0.0, 1.0},  {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
+                                       {0.0, 0.0, -2.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}};
+  for (Method m : {Method::filtered, Method::exact}) {
+    EXPECT_TRUE(vertex_face_toi(hit, m).has_value());
+    EXPECT_TRUE(vertex_face_toi(through_vertex, m).has_value());
+  }
+  EXPECT_EQ(std::fetestexcept(FE_ALL_EXCEPT), 0) << env.name << ": status flags raised inside were left behind";
+}
+
 TEST_P(EveryEnvironment, ThrowingEntryPointsRestoreTheEnvironment) {
   const Environment env = GetParam();
   if (!supported(env)) GTEST_SKIP() << "cannot install " << env.name << " on this platform";

@@ -7,6 +7,7 @@
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <pthread.h>
+#include <unistd.h>
 #define EXACTCCD_HAVE_PTHREAD_STACKSIZE 1
 #endif
 
@@ -22,33 +23,46 @@ constexpr std::size_t kFrameBytes = 4096;
 #else
 constexpr std::size_t kFrameBytes = 384;
 #endif
-// The recursion may use half of a 1 MB thread stack on the caller's thread: with 384-byte
-// levels, polynomials of up to 325-bit coefficients (every query of the shared unit tests,
-// at most 240 bits, and of the bundled simulation sets, at most 320 bits, measured) stay on
-// the caller's thread; a helper thread costs about as much as the CGAL path itself (measured:
-// exact method on the unit tests 85 -> 177 us per query when every query used one).
-constexpr std::size_t kCallerBudget = std::size_t{512} << 10;
+// Where the calling thread's stack cannot be measured (off glibc), the recursion may use this
+// much of it inline: 64 KB (a musl thread has 128 KB, a macOS secondary thread 512 KB).
+constexpr std::size_t kUnmeasuredBudget = std::size_t{64} << 10;
+// What the rest of a query and the caller keep of the stack besides the recursion.
+constexpr std::size_t kReserve = std::size_t{256} << 10;
 constexpr std::size_t kBaseStack = std::size_t{1} << 20;       // everything but the recursion
 constexpr std::size_t kDepthMargin = 64;
 
-/// Bytes left on the calling thread's stack below this frame, or 0 when it cannot be told.
-/// glibc reads the main thread's stack from its limit and /proc/self/maps (tens of
-/// microseconds), so this is asked only for deep isolations.
-std::size_t remaining_stack() {
+/// The calling thread's stack [low, low + size), measured once per thread (glibc reads the
+/// main thread's from its limit and /proc/self/maps: tens of microseconds); size 0 when it
+/// cannot be told. A per-thread fact, not shared state.
+struct StackBounds {
+  std::uintptr_t low = 0;
+  std::size_t size = 0;
+};
+
+StackBounds measure_stack() {
 #if defined(__GLIBC__)
   pthread_attr_t attr;
-  if (pthread_getattr_np(pthread_self(), &attr) != 0) return 0;
+  if (pthread_getattr_np(pthread_self(), &attr) != 0) return {};
   void* low = nullptr;
   std::size_t size = 0;
   const int got = pthread_attr_getstack(&attr, &low, &size);
   pthread_attr_destroy(&attr);
-  if (got != 0) return 0;
-  const char here = 0;
-  const auto sp = reinterpret_cast<std::uintptr_t>(&here), bottom = reinterpret_cast<std::uintptr_t>(low);
-  return sp > bottom ? sp - bottom : 0;
+  if (got != 0) return {};
+  return {reinterpret_cast<std::uintptr_t>(low), size};
 #else
-  return 0;
+  return {};
 #endif
+}
+
+/// Bytes left on the calling thread's stack below this frame; 0 when unknown, or when this
+/// frame is not on the thread's own stack (a fiber, a coroutine, a signal stack).
+std::size_t remaining_stack() {
+  thread_local const StackBounds bounds = measure_stack();
+  if (bounds.size == 0) return 0;
+  const char here = 0;
+  const auto sp = reinterpret_cast<std::uintptr_t>(&here);
+  if (sp <= bounds.low || sp > bounds.low + bounds.size) return 0;
+  return sp - bounds.low;
 }
 
 }  // namespace
@@ -59,9 +73,10 @@ std::size_t descartes_depth_bound(std::size_t coefficient_bits) {
 
 void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& work) {
   const std::size_t need = depth * kFrameBytes;
-  // Inline when the recursion fits half of a 1 MB stack, or what this thread has left (with a
-  // reserve for everything else): a main thread or a default glibc thread has 8 MB.
-  if (need <= kCallerBudget || need + kBaseStack <= remaining_stack()) {
+  // Inline when the recursion fits what this thread has left with a reserve to spare (a main
+  // thread or a default glibc thread has 8 MB), or a small budget where that is unknown.
+  const std::size_t left = remaining_stack();
+  if (left > 0 ? need + kReserve <= left : need <= kUnmeasuredBudget) {
     work();
     return;
   }
@@ -70,7 +85,10 @@ void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& wo
     const std::function<void()>* work;
     std::exception_ptr error;
   } job{&work, nullptr};
-  const std::size_t bytes = kBaseStack + need;
+  // A whole number of pages: some systems (macOS) refuse any other stack size.
+  const long page_size = sysconf(_SC_PAGESIZE);
+  const std::size_t page = page_size > 0 ? static_cast<std::size_t>(page_size) : 4096;
+  const std::size_t bytes = (kBaseStack + need + page - 1) / page * page;
   pthread_attr_t attr;
   if (pthread_attr_init(&attr) != 0) throw std::runtime_error("exactccd: pthread_attr_init failed");
   const int sized = pthread_attr_setstacksize(&attr, bytes);

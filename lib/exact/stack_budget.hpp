@@ -28,10 +28,11 @@ namespace exactccd::exact {
 /// of degree <= 4 whose integer coefficients have at most `coefficient_bits` bits.
 std::size_t descartes_depth_bound(std::size_t coefficient_bits);
 
-/// Runs `work` on the calling thread when `depth` recursion levels of CGAL's isolation fit the
-/// budget every caller's thread is assumed to have (512 KB for them, of a 1 MB thread stack),
-/// otherwise on a new thread whose stack holds `depth` levels (and waits for it; an exception
-/// thrown by `work` is rethrown here). Throws std::runtime_error when that thread cannot start.
+/// Runs `work` on the calling thread when `depth` recursion levels of CGAL's isolation fit what
+/// is left of its stack (measured where the platform tells, with a reserve; 64 KB where it does
+/// not), otherwise on a new thread whose stack holds `depth` levels (and waits for it; an
+/// exception thrown by `work` is rethrown here). Throws std::runtime_error when that thread
+/// cannot start.
 void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& work);
 
 }  // namespace exactccd::exact

@@ -83,10 +83,12 @@ class DefaultFpEnvironment {
     }
     mode_ = Mode::control_registers;
     if (!sse_default) _mm_setcsr((mxcsr_ & 0x3Fu) | 0x1F80u);  // keep the status flags
-    if (!x87_default) {
-      const unsigned short default_x87 = 0x037F;
-      __asm__ volatile("fldcw %0" : : "m"(default_x87));
-    }
+    // The x87 environment (control and status words) is saved whole, so that the status flags
+    // raised by the long-double guesses inside are not left behind (fnstenv also masks every
+    // x87 exception; the caller's masks are all set in this mode anyway).
+    __asm__ volatile("fnstenv %0" : "=m"(x87_environment_));
+    const unsigned short default_x87 = 0x037F;
+    __asm__ volatile("fldcw %0" : : "m"(default_x87));
 #else
     if (is_default_fp_environment()) return;
     mode_ = Mode::whole_environment;
@@ -104,7 +106,9 @@ class DefaultFpEnvironment {
       case Mode::control_registers:
 #if defined(__x86_64__) && defined(__GNUC__)
         _mm_setcsr(mxcsr_);  // the caller's control bits and status flags, as found
-        __asm__ volatile("fldcw %0" : : "m"(x87_));  // every x87 exception stays masked
+        // The caller's x87 control and status words, as found (every exception masked, so no
+        // restored flag can become a pending exception).
+        __asm__ volatile("fldenv %0" : : "m"(x87_environment_));
 #endif
         break;
     }
@@ -122,6 +126,7 @@ class DefaultFpEnvironment {
 #if defined(__x86_64__) && defined(__GNUC__)
   unsigned mxcsr_ = 0;
   unsigned short x87_ = 0;
+  unsigned char x87_environment_[28] = {};  // fnstenv's 32-bit protected-mode format
 #endif
 };
 

@@ -23,9 +23,9 @@ using Interval = CGAL::Interval_nt<false>;  // requires the rounding mode set by
 template <int D>
 using Bernstein = std::array<Interval, D + 1>;
 
-constexpr int kMaxSubdivisionDepth = 30;  // cells of width 2^-30; closer roots go to exact
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr int kBinomial[5][5] = {
+inline constexpr int kMaxSubdivisionDepth = 30;  // cells of width 2^-30; closer roots go to exact
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+inline constexpr int kBinomial[5][5] = {
     {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
 
 inline int certain_sign(const Interval& x) {
@@ -35,7 +35,7 @@ inline int certain_sign(const Interval& x) {
 }
 
 /// lcm of C(D, 0..D): 1, 1, 2, 3, 12.
-constexpr int kBinomialLcm[5] = {1, 1, 2, 3, 12};
+inline constexpr int kBinomialLcm[5] = {1, 1, 2, 3, 12};
 
 /// Bernstein coefficients on [0, 1] times L = kBinomialLcm[D] (a positive factor: same signs):
 /// L b_j = sum_{i <= j} C(j, i) (L / C(D, i)) c_i. Every multiplier is a small integer, so with

@@ -20,7 +20,7 @@ namespace exactccd::filter::interval {
 // exact narrowing (toi_in_cell): interval signs of V fail a few bits short of adjacent doubles
 // for most roots (design.md, 5.2), so a long interval bisection mostly wastes time; 16 still
 // finds exact dyadic roots of small-integer input (t = 1/2, 3/8, ...) here.
-constexpr int kToiHalvings = 16;
+inline constexpr int kToiHalvings = 16;
 enum class CellVerdict { contact, no_contact, uncertain };
 
 /// The in-plane rule over a root cell of `defining`; on an uncertain sign the cell is narrowed
@@ -84,10 +84,10 @@ struct SegmentTest {
   int x, w;   ///< rows of X and W
 };
 // Vertex-face rows p, a, b, c: p on edge (a, b), (b, c), (c, a); W the opposite vertex.
-constexpr std::array<SegmentTest, 3> kVertexFaceTests{{{0, 0, 3}, {1, 0, 1}, {2, 0, 2}}};
+inline constexpr std::array<SegmentTest, 3> kVertexFaceTests{{{0, 0, 3}, {1, 0, 1}, {2, 0, 2}}};
 // Edge-edge rows a0, a1, b0, b1: a0 and a1 on edge b, b0 and b1 on edge a; W the other
 // endpoint of X's own edge.
-constexpr std::array<SegmentTest, 4> kEdgeEdgeTests{{{0, 0, 1}, {1, 1, 0}, {2, 2, 3}, {3, 3, 2}}};
+inline constexpr std::array<SegmentTest, 4> kEdgeEdgeTests{{{0, 0, 1}, {1, 1, 0}, {2, 2, 3}, {3, 3, 2}}};
 
 template <class Polys>
 const auto& segment_test(const Polys& P, int i) {

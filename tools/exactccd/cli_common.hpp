@@ -65,6 +65,7 @@ auto visit_kind(QueryKind kind, F&& f) {
     kinds::for_each_kind([&](auto k) {
       if (i++ == kind.index) out.emplace(f(k));
     });
+    if (!out) throw std::logic_error("visit_kind: no kind at index " + std::to_string(kind.index));
     return std::move(*out);
   }
 }

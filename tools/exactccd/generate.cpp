@@ -34,7 +34,7 @@ const CommandSpec& command() {
         "usage: exactccd generate catalogue --out DIR\n"
         "       exactccd generate sim --scene cloth|strip|fold|pile [--resolution N] [--seed S]\n"
         "                             [--max-queries M] [--truth exact|filtered] --out DIR\n"
-        "       exactccd generate families [--seed S] [--instances N] [--k-step K] --out DIR\n"
+        "       exactccd generate families [--seed S] [--instances N] [--k-step K] [--wide] --out DIR\n"
         "       exactccd generate scene --scene NAME [--resolution N] [--seed S] --out DIR\n";
     c.description =
         "Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).\n"
@@ -48,7 +48,10 @@ const CommandSpec& command() {
         "              the answer known by construction where the family knows it (else the exact\n"
         "              reference, Method::exact); every constructed answer and time of impact is\n"
         "              checked against Method::exact, and a disagreement is an internal error (exit 1,\n"
-        "              naming the instance, nothing written)\n"
+        "              naming the instance, nothing written); with --wide, each instance placed\n"
+        "              in every wide style instead (families::make_wide: per-axis power-of-two\n"
+        "              scales from the subnormal to the overflow end, translations, shears, all\n"
+        "              exact) in DIR/families-wide-vertex-face.csv and families-wide-edge-edge.csv\n"
         "  scene       one time step of a procedural scene as two meshes, DIR/T0.obj (t = 0) and\n"
         "              DIR/T1.obj (t = 1), for exactccd scene\n"
         "  sim         simulation-like queries: the broad-phase candidates of one time step of a\n"
@@ -70,6 +73,7 @@ const CommandSpec& command() {
         integer_option("--instances", "N", 1, kMaxFamilyInstances, "1",
                        "families: instances per direction and (family, k)"),
         integer_option("--k-step", "K", 1, 60, "4", "families: the step K between perturbation exponents"),
+        flag_option("--wide", "families: wide-exponent placements (every style) instead of the plain ones"),
         integer_option("--max-queries", "M", 0, kMaxQueriesPerFile, "1000",
                        "keep at most M queries per file (0 = all): every\n"
                        "colliding candidate (evenly spaced ones if more than M collide), then\n"
@@ -177,6 +181,7 @@ int run_generate(int argc, char** argv) {
   const int family_instances = static_cast<int>(options.integer("--instances"));
   const int k_step = static_cast<int>(options.integer("--k-step"));
   const std::string truth_name = options.text("--truth");
+  const bool wide = options.flag("--wide");
   if (options.positionals().size() > 1)
     throw UsageError("generate: unexpected argument '" + options.positionals()[1] + "'");
   const std::string what = options.positionals().empty() ? "" : options.positionals()[0];
@@ -197,18 +202,30 @@ int run_generate(int argc, char** argv) {
       for (int k = families::kUnperturbed; k <= 60; k = (k < 0 ? 0 : k + k_step))
         for (int i = 0; i < 2 * family_instances; ++i) {
           const bool toward = i % 2 == 0;
-          const families::Instance inst = f.make(k, toward, rng);
           const std::string where = f.name + " k=" + std::to_string(k) + (toward ? " toward" : " away") +
                                     " instance " + std::to_string(i / 2);
-          (f.vertex_face ? vf : ee).truth.push_back(family_truth(inst, where));
-          (f.vertex_face ? vf : ee).rows.push_back(std::visit([](const auto& q) { return rational_rows(q); }, inst.query));
-          constructed += inst.expected.has_value();
+          const auto add = [&](const families::Instance& inst, const std::string& placement) {
+            (f.vertex_face ? vf : ee).truth.push_back(family_truth(inst, where + placement));
+            (f.vertex_face ? vf : ee).rows.push_back(
+                std::visit([](const auto& q) { return rational_rows(q); }, inst.query));
+            constructed += inst.expected.has_value();
+          };
+          if (!wide) {
+            add(f.make(k, toward, rng), "");
+            continue;
+          }
+          for (int style = 0; style < families::kWideStyleCount; ++style) {
+            const auto w = static_cast<families::WideStyle>(style);
+            if (const auto inst = families::make_wide(f, k, toward, w, rng))
+              add(*inst, std::string(" wide ") + families::wide_style_name(w));
+          }
         }
     prepare_output_directory(out);
     const std::string note = " (truth: " + std::to_string(constructed) + " of " + std::to_string(vf.size() + ee.size()) +
                              " by construction, checked against Method::exact; the others by Method::exact)";
-    write_atomically(fs::path(out) / "families-vertex-face.csv", vf, note);
-    write_atomically(fs::path(out) / "families-edge-edge.csv", ee, note);
+    const std::string prefix = wide ? "families-wide-" : "families-";
+    write_atomically(fs::path(out) / (prefix + "vertex-face.csv"), vf, note);
+    write_atomically(fs::path(out) / (prefix + "edge-edge.csv"), ee, note);
     return kExitOk;
   }
   if (scene_name.empty()) throw UsageError("generate sim: --scene cloth|strip|fold|pile is required");
