@@ -282,6 +282,32 @@ elseif(CASE STREQUAL "check_small_stack")
     endforeach()
   endforeach()
 
+elseif(CASE STREQUAL "families_wide")
+  # Through the CLI: every degenerate family in every wide-exponent style (generate checks each
+  # constructed answer and TOI against Method::exact), then both exact methods on the files:
+  # 0 false positives and 0 false negatives against the constructed truth.
+  run(generate families --wide --k-step 12 --seed 7 --out ${WORK}/wide)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "generate families --wide: exit ${rc}\n${err}")
+  endif()
+  foreach(method filtered exact)
+    run(check --method ${method} --json --threads 2 ${WORK}/wide/families-wide-vertex-face.csv
+        ${WORK}/wide/families-wide-edge-edge.csv)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "check --method ${method} on the wide families: exit ${rc}\n${err}")
+    endif()
+    string(REGEX MATCHALL "\"(fp|fn)\": [0-9]+" counts "${out}")
+    list(LENGTH counts n)
+    if(NOT n EQUAL 4)
+      message(FATAL_ERROR "check --method ${method} --json: expected fp and fn for two files, got '${counts}'\n${out}")
+    endif()
+    foreach(c IN LISTS counts)
+      if(NOT c MATCHES ": 0$")
+        message(FATAL_ERROR "check --method ${method} on the wide families: ${c}\n${out}")
+      endif()
+    endforeach()
+  endforeach()
+
 else()
   message(FATAL_ERROR "cli_check.cmake: unknown CASE '${CASE}'")
 endif()
