@@ -83,10 +83,10 @@ class DefaultFpEnvironment {
     }
     mode_ = Mode::control_registers;
     if (!sse_default) _mm_setcsr((mxcsr_ & 0x3Fu) | 0x1F80u);  // keep the status flags
-    // The x87 environment (control and status words) is saved whole, so that the status flags
-    // raised by the long-double guesses inside are not left behind (fnstenv also masks every
-    // x87 exception; the caller's masks are all set in this mode anyway).
-    __asm__ volatile("fnstenv %0" : "=m"(x87_environment_));
+    // The x87 status word too, so that flags raised by the long-double guesses inside are not
+    // left behind (fnstsw is cheap; fnstenv/fldenv cost ~100 ns and are used on the way out
+    // only when the caller had x87 flags raised).
+    __asm__ volatile("fnstsw %0" : "=m"(x87_status_));
     const unsigned short default_x87 = 0x037F;
     __asm__ volatile("fldcw %0" : : "m"(default_x87));
 #else
@@ -106,9 +106,17 @@ class DefaultFpEnvironment {
       case Mode::control_registers:
 #if defined(__x86_64__) && defined(__GNUC__)
         _mm_setcsr(mxcsr_);  // the caller's control bits and status flags, as found
-        // The caller's x87 control and status words, as found (every exception masked, so no
-        // restored flag can become a pending exception).
-        __asm__ volatile("fldenv %0" : : "m"(x87_environment_));
+        // The caller's x87 status flags and control word, as found (every exception masked in
+        // this mode, so no restored flag can become a pending exception).
+        if ((x87_status_ & 0x7Fu) == 0) {
+          __asm__ volatile("fnclex");
+        } else {
+          X87Environment env;
+          __asm__ volatile("fnstenv %0" : "=m"(env));
+          env.status = static_cast<unsigned short>((env.status & ~0x7Fu) | (x87_status_ & 0x7Fu));
+          __asm__ volatile("fldenv %0" : : "m"(env));
+        }
+        __asm__ volatile("fldcw %0" : : "m"(x87_));
 #endif
         break;
     }
@@ -126,7 +134,13 @@ class DefaultFpEnvironment {
 #if defined(__x86_64__) && defined(__GNUC__)
   unsigned mxcsr_ = 0;
   unsigned short x87_ = 0;
-  unsigned char x87_environment_[28] = {};  // fnstenv's 32-bit protected-mode format
+  unsigned short x87_status_ = 0;
+  /// fnstenv's 32-bit protected-mode layout (28 bytes): only the status word is edited.
+  struct X87Environment {
+    unsigned short control, unused0, status, unused1;
+    unsigned char rest[20];
+  };
+  static_assert(sizeof(X87Environment) == 28, "the x87 environment is 28 bytes");
 #endif
 };
 
