@@ -1,0 +1,121 @@
+// Stage 1's certified Bernstein coefficients of the volume (certified_volume_bernstein, also
+// used by the scene's time bound) against exact rational arithmetic: wherever the filter gives a
+// value and an error bound, the exact coefficient lies strictly within it, and the signs agree
+// with certified_group_sign's. On bundled data, wide-exponent families (where a constant
+// absolute underflow term once failed) and random near-degenerate queries.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
+#include "filter/volume_exclusion.hpp"
+#include "fuzz/families.hpp"
+#include "io/benchmark_csv.hpp"
+
+namespace exactccd {
+namespace {
+
+namespace fs = std::filesystem;
+using Rows = std::array<Vec3, 8>;
+using QVec = std::array<mpq_class, 3>;
+
+QVec exact_difference(const Vec3& a, const Vec3& b) {
+  return {mpq_class(a.x) - mpq_class(b.x), mpq_class(a.y) - mpq_class(b.y), mpq_class(a.z) - mpq_class(b.z)};
+}
+
+mpq_class det(const QVec& u, const QVec& v, const QVec& w) {
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+}
+
+/// |exact - value| < error, in exact arithmetic (value and error are doubles).
+bool within(const mpq_class& exact, const filter::CertifiedSum& s) {
+  return abs(exact - mpq_class(s.value)) < mpq_class(s.error);
+}
+
+struct Tally {
+  std::size_t queries = 0, certified = 0;
+};
+
+/// Checks one query's volume V = det[r1 - r0, r2 - r0, r3 - r0] (rows r0..r3 at t0, +4 at t1).
+void check(const Rows& r, const std::string& where, Tally& tally) {
+  ++tally.queries;
+  const auto d = [&](int i, int t) {
+    return Vec3{r[i + 4 * t].x - r[4 * t].x, r[i + 4 * t].y - r[4 * t].y, r[i + 4 * t].z - r[4 * t].z};
+  };
+  const auto beta = filter::certified_volume_bernstein(d(1, 0), d(1, 1), d(2, 0), d(2, 1), d(3, 0), d(3, 1));
+  if (!beta) return;
+  ++tally.certified;
+  QVec u[2], v[2], w[2];
+  for (int t = 0; t < 2; ++t) {
+    u[t] = exact_difference(r[1 + 4 * t], r[4 * t]);
+    v[t] = exact_difference(r[2 + 4 * t], r[4 * t]);
+    w[t] = exact_difference(r[3 + 4 * t], r[4 * t]);
+  }
+  const mpq_class exact[4] = {det(u[0], v[0], w[0]),
+                              det(u[1], v[0], w[0]) + det(u[0], v[1], w[0]) + det(u[0], v[0], w[1]),
+                              det(u[1], v[1], w[0]) + det(u[1], v[0], w[1]) + det(u[0], v[1], w[1]),
+                              det(u[1], v[1], w[1])};
+  for (int m = 0; m < 4; ++m) {
+    EXPECT_TRUE(within(exact[m], (*beta)[m]))
+        << where << ": beta_" << m << " = " << exact[m].get_d() << " outside " << (*beta)[m].value << " +- "
+        << (*beta)[m].error;
+    const int s = sgn(exact[m]);
+    if ((*beta)[m].value > (*beta)[m].error) {
+      EXPECT_EQ(s, 1) << where << " beta_" << m;
+    }
+    if ((*beta)[m].value < -(*beta)[m].error) {
+      EXPECT_EQ(s, -1) << where << " beta_" << m;
+    }
+  }
+}
+
+TEST(CertifiedVolumeBernstein, EnclosesTheExactCoefficientsOnBundledData) {
+  Tally tally;
+  for (const char* dir : {"sim", "catalogue", "families"})
+    for (const auto& e : fs::directory_iterator(fs::path(EXACTCCD_SOURCE_DIR) / "data" / dir)) {
+      if (e.path().extension() != ".csv") continue;
+      std::ifstream in(e.path());
+      const io::BenchmarkQueries q = io::read_benchmark_csv(in, e.path().string());
+      for (std::size_t i = 0; i < q.size(); ++i)
+        if (const auto rows = io::exact_double_rows(q.rows[i]))
+          check(*rows, e.path().filename().string() + "#" + std::to_string(i), tally);
+    }
+  EXPECT_GT(tally.certified, tally.queries / 2) << "the filter should certify most bundled queries";
+}
+
+TEST(CertifiedVolumeBernstein, EnclosesTheExactCoefficientsOnWideFamilies) {
+  Tally tally;
+  std::mt19937_64 rng(1202);
+  for (const families::Family& f : families::all_families())
+    for (int style = 0; style < families::kWideStyleCount; ++style)
+      for (int k : {0, 20, 52})
+        for (bool toward : {true, false})
+          for (int repeat = 0; repeat < 3; ++repeat)
+            if (const auto inst = families::make_wide(f, k, toward, static_cast<families::WideStyle>(style), rng))
+              std::visit([&](const auto& q) { check(rows(q), f.name + " wide", tally); }, inst->query);
+  EXPECT_GT(tally.queries, 500u);
+  EXPECT_GT(tally.certified, 0u);
+}
+
+TEST(CertifiedVolumeBernstein, EnclosesTheExactCoefficientsOnRandomQueries) {
+  Tally tally;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1074, 1000);
+  for (int n = 0; n < 3000; ++n) {
+    Rows r;
+    const int e = n % 3 == 0 ? exponent(rng) / 4 : 0;  // a third at scales 2^-268..2^250
+    for (Vec3& p : r) p = {std::ldexp(unit(rng), e), std::ldexp(unit(rng), e), std::ldexp(unit(rng), e)};
+    if (n % 2 == 0) r[7] = r[3];  // a static fourth point: nearer degenerate volumes
+    check(r, "random #" + std::to_string(n), tally);
+  }
+  EXPECT_GT(tally.certified, 1000u);
+}
+
+}  // namespace
+}  // namespace exactccd
