@@ -57,13 +57,14 @@ struct Regression {
   std::optional<bool> collides;  ///< by hand or by construction; nullopt: only the exact path knows
 };
 const std::vector<Regression> kRegressions = {
-    // The fuzzers in the default configuration (spread limit 400, docs/fuzzing.md) found none. Wide-exponent queries the
-    // filtered method answered "no collision" before commit 0aa1a3d (its static volume filter
-    // took a per-operation 2^-1075 as the underflow error, but later products amplify it):
-    // the reported one, its edge-edge analogue (tests/test_wide_exponents.cpp derives both by
-    // hand) and the seven instances of tests/test_wide_exponents.cpp that failed on that
-    // version's filter (all with the sheared style of families::make_wide; answers by
-    // construction). Each collides.
+    // The fuzzers in the default configuration (spread limit 400, docs/fuzzing.md) found none.
+    // Wide-exponent queries the filtered method answered "no collision" before commit 0aa1a3d
+    // (its static volume filter took a per-operation 2^-1075 as the underflow error, but later
+    // products amplify it): the reported one, its edge-edge analogue (both derived by hand in
+    // tests/test_wide_exponents.cpp) and the instances of tests/test_wide_exponents.cpp that
+    // failed on that version's filter (all with the sheared style of families::make_wide;
+    // answers by construction): seven with the test's first seeding, six with its final one.
+    // Each collides.
     {"the reported query (issue 10): a static triangle (0,0,0), (2^200,0,1), (0,2^-538,0); p crosses its plane inside at t = 1/2 (stage 1 false negative before 0aa1a3d)", true,
      {{{0x1p-360, 0x1p-539, 0x0p+0},
       {0x0p+0, 0x0p+0, 0x0p+0},
@@ -153,6 +154,66 @@ const std::vector<Regression> kRegressions = {
       {-0x1.fffffffffffp+641, -0x1p-572, 0x1p-516},
       {-0x1p+642, -0x1p-573, 0x1p-517},
       {-0x1p+642, 0x1p-573, 0x1p-517}}},
+     true},
+    {"families::make_wide(vf_vertex_through_edge, unperturbed, toward, sheared), second seeding (stage 1 false negative before 0aa1a3d)", true,
+     {{{-0x1p+663, 0x1p-339, -0x0.0000008p-1022},
+      {0x0p+0, 0x1p-339, 0x0p+0},
+      {-0x1p+664, 0x1p-339, -0x0.000003p-1022},
+      {0x0p+0, 0x1.fep-340, 0x0p+0},
+      {-0x1p+663, 0x1p-339, -0x0.0000028p-1022},
+      {0x0p+0, 0x1p-339, 0x0p+0},
+      {-0x1p+664, 0x1p-339, -0x0.000003p-1022},
+      {0x0p+0, 0x1.fep-340, 0x0p+0}}},
+     true},
+    {"families::make_wide(vf_grazing, k 28, toward, sheared), second seeding (stage 1 false negative before 0aa1a3d)", true,
+     {{{0x1.7fdp+847, -0x1.4000002p-290, 0x1.bfffffep-792},
+      {0x1.8p+847, 0x0p+0, 0x1.cp-792},
+      {0x1.7fcp+847, -0x1.8p-289, 0x1.bfffff8p-792},
+      {0x1.7f8p+847, -0x1p-288, 0x1.cp-792},
+      {0x1.7f9p+847, -0x1.90000008p-288, 0x1.bfffffep-792},
+      {0x1.8p+847, 0x0p+0, 0x1.cp-792},
+      {0x1.7fcp+847, -0x1.8p-289, 0x1.bfffff8p-792},
+      {0x1.7f8p+847, -0x1p-287, 0x1.cp-792}}},
+     true},
+    {"families::make_wide(ee_contact_at_t0, k 56, toward, sheared), second seeding (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x1.4p-414, -0x1p+416, 0x1.8p-874},
+      {-0x1.4p-414, 0x1p+416, 0x1.8p-874},
+      {0x1p-471, -0x1p+359, 0x1.7ep-874},
+      {0x1p-471, -0x1p+359, 0x1.82p-874},
+      {0x1.4p-414, -0x1p+416, 0x1.8p-874},
+      {-0x1.4p-414, 0x1p+416, 0x1.8p-874},
+      {-0x1p-415, 0x1p+415, 0x1.7ep-874},
+      {-0x1p-415, 0x1p+415, 0x1.82p-874}}},
+     true},
+    {"families::make_wide(ee_coplanar_sliding, k 3, toward, sheared), second seeding (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1.8p-485, 0x0p+0, 0x1p+522},
+      {0x1.5p-485, -0x1p-701, 0x1.cp+521},
+      {0x1.5p-485, -0x1.8p-701, 0x1.cp+521},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {0x1.8p-485, 0x0p+0, 0x1p+522},
+      {0x1.5p-485, 0x1p-702, 0x1.cp+521},
+      {0x1.5p-485, 0x0p+0, 0x1.cp+521}}},
+     true},
+    {"families::make_wide(ee_coplanar_sliding, k 8, toward, sheared), second seeding (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x0p+0, 0x0p+0, 0x1p-707},
+      {-0x1p+783, 0x0p+0, 0x1.ffffep-708},
+      {-0x1.fep+782, 0x1p-749, 0x1.ffffc02p-708},
+      {-0x1.fep+782, 0x1.8p-749, 0x1.ffffb02p-708},
+      {0x0p+0, 0x0p+0, 0x1p-707},
+      {-0x1p+783, 0x0p+0, 0x1.ffffep-708},
+      {-0x1.fep+782, -0x1p-750, 0x1.fffff02p-708},
+      {-0x1.fep+782, 0x0p+0, 0x1.ffffe02p-708}}},
+     true},
+    {"families::make_wide(ee_coplanar_sliding, k 52, toward, sheared), second seeding (stage 1 false negative before 0aa1a3d)", false,
+     {{{0x0p+0, 0x0p+0, 0x0p+0},
+      {-0x1p-790, 0x1p+790, 0x0p+0},
+      {-0x1.ffffffffffffep-791, 0x1.ffffffffffffep+789, 0x1p-635},
+      {-0x1.ffffffffffffep-791, 0x1.ffffffffffffep+789, 0x1.8p-635},
+      {0x0p+0, 0x0p+0, 0x0p+0},
+      {-0x1p-790, 0x1p+790, 0x0p+0},
+      {-0x1.ffffffffffffep-791, 0x1.ffffffffffffep+789, -0x1p-636},
+      {-0x1.ffffffffffffep-791, 0x1.ffffffffffffep+789, 0x0p+0}}},
      true},
     // Found by fuzz_vertex_face in the full-range configuration (EXACTCCD_FUZZ_MAX_SPREAD=2200)
     // on the pre-0aa1a3d filter in 832 inputs, without the wide-* seeds: with the triangle's b
