@@ -60,6 +60,13 @@ TEST(SceneBounds, TimeBoundsNeverDropAnEarlierContact) {
   const auto r = rows(fall);
   EXPECT_TRUE(scene::never_coplanar_until({r[0], r[1], r[2], r[3]}, {r[4], r[5], r[6], r[7]}, 0.25));
   EXPECT_FALSE(scene::never_coplanar_until({r[0], r[1], r[2], r[3]}, {r[4], r[5], r[6], r[7]}, 0.5));
+  // The same fall scaled by 2^-1000 (every coordinate exact): stage 1's bound does not apply to
+  // such tiny entries, and the time bound retries on the points scaled back towards 1.
+  std::array<Vec3, 8> tiny;
+  for (int i = 0; i < 8; ++i)
+    tiny[i] = {std::ldexp(r[i].x, -1000), std::ldexp(r[i].y, -1000), std::ldexp(r[i].z, -1000)};
+  EXPECT_TRUE(scene::never_coplanar_until({tiny[0], tiny[1], tiny[2], tiny[3]}, {tiny[4], tiny[5], tiny[6], tiny[7]}, 0.25));
+  EXPECT_FALSE(scene::never_coplanar_until({tiny[0], tiny[1], tiny[2], tiny[3]}, {tiny[4], tiny[5], tiny[6], tiny[7]}, 0.5));
   scene::Box point = scene::empty_box(), triangle = scene::empty_box();
   scene::add_vertex_until(point, r[0], r[4], 0.25);
   for (int i = 1; i < 4; ++i) scene::add_vertex_until(triangle, r[i], r[i + 4], 0.25);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "filter/normalize.hpp"
 #include "filter/volume_exclusion.hpp"
 
 namespace exactccd::scene {
@@ -51,9 +52,21 @@ void add_vertex_until(Box& box, const Vec3& p0, const Vec3& p1, double h) {
 // bound does not apply (tiny or overflowing entries) nothing is proved.
 bool never_coplanar_until(const std::array<Vec3, 4>& at_t0, const std::array<Vec3, 4>& at_t1, double h) {
   const auto difference = [](const Vec3& a, const Vec3& b) { return Vec3{a.x - b.x, a.y - b.y, a.z - b.z}; };
-  const auto beta = filter::certified_volume_bernstein(
-      difference(at_t0[1], at_t0[0]), difference(at_t1[1], at_t1[0]), difference(at_t0[2], at_t0[0]),
-      difference(at_t1[2], at_t1[0]), difference(at_t0[3], at_t0[0]), difference(at_t1[3], at_t1[0]));
+  const auto certified = [&](const std::array<Vec3, 8>& r) {
+    return filter::certified_volume_bernstein(difference(r[1], r[0]), difference(r[5], r[4]),
+                                              difference(r[2], r[0]), difference(r[6], r[4]),
+                                              difference(r[3], r[0]), difference(r[7], r[4]));
+  };
+  const std::array<Vec3, 8> points{at_t0[0], at_t0[1], at_t0[2], at_t0[3], at_t1[0], at_t1[1], at_t1[2], at_t1[3]};
+  auto beta = certified(points);
+  if (!beta) {
+    // Tiny (or huge) points: the same test on the points scaled exactly by a power of two
+    // towards 1 (V scales by a positive factor, its signs do not change), as the filtered method
+    // retries stage 1.
+    bool scaled = false;
+    const auto q = filter::scaled_to_unit(from_rows<VertexFaceQuery>(points), scaled);
+    if (scaled) beta = certified(rows(q));
+  }
   if (!beta) return false;
   CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
   const auto enclosure = [](const filter::CertifiedSum& x) {
