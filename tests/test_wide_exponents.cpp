@@ -18,6 +18,7 @@
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
 #include "fuzz/families.hpp"
+#include "kinds/primitive_kinds.hpp"
 #include "fuzz/fuzz_input.hpp"
 
 namespace exactccd {
@@ -55,10 +56,7 @@ auto rational(const Query& q) {
   std::array<RationalVec3, 8> r;
   const auto d = rows(q);
   for (std::size_t i = 0; i < 8; ++i) r[i] = {mpq_class(d[i].x), mpq_class(d[i].y), mpq_class(d[i].z)};
-  if constexpr (std::is_same_v<Query, VertexFaceQuery>)
-    return from_rows<RationalVertexFaceQuery>(r);
-  else
-    return from_rows<RationalEdgeEdgeQuery>(r);
+  return from_rows<typename kinds::kind_of<Query>::template Query<mpq_class>>(r);
 }
 
 /// The answers of every exact entry point: each exact Method (ccd and toi), the rational
@@ -70,27 +68,15 @@ std::vector<Answer> exact_answers(const Query& q, bool with_rational = true) {
   for (Method m : kEveryMethod) {
     if (!is_exact_method(m)) continue;
     const std::string name = m == Method::filtered ? "filtered" : m == Method::exact ? "exact" : "method";
-    if constexpr (vf) {
-      out.push_back({name + " ccd", vertex_face_ccd(q, m), std::nullopt});
-      const auto toi = vertex_face_toi(q, m);
-      out.push_back({name + " toi", toi.has_value(), toi});
-    } else {
-      out.push_back({name + " ccd", edge_edge_ccd(q, m), std::nullopt});
-      const auto toi = edge_edge_toi(q, m);
-      out.push_back({name + " toi", toi.has_value(), toi});
-    }
+    out.push_back({name + " ccd", ccd(q, m), std::nullopt});
+    const auto t = toi(q, m);
+    out.push_back({name + " toi", t.has_value(), t});
   }
   if (with_rational) {
     const auto r = rational(q);
-    if constexpr (vf) {
-      out.push_back({"rational ccd", vertex_face_ccd(r), std::nullopt});
-      const auto toi = vertex_face_toi(r);
-      out.push_back({"rational toi", toi.has_value(), toi});
-    } else {
-      out.push_back({"rational ccd", edge_edge_ccd(r), std::nullopt});
-      const auto toi = edge_edge_toi(r);
-      out.push_back({"rational toi", toi.has_value(), toi});
-    }
+    out.push_back({"rational ccd", ccd(r), std::nullopt});
+    const auto t = toi(r);
+    out.push_back({"rational toi", t.has_value(), t});
   }
   const auto f = flat(q);
   int collides = -1;

@@ -264,8 +264,7 @@ StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, 
 
   // The interval versions of the rule's polynomials, built up front under the rounding mode
   // interval arithmetic needs (the dual oracle evaluates them; GMP work is integer-only).
-  using IntervalQuery = std::conditional_t<std::is_same_v<Query, VertexFaceQuery>,
-                                           VertexFaceQueryT<Interval>, EdgeEdgeQueryT<Interval>>;
+  using IntervalQuery = typename kinds::kind_of<Query>::template Query<Interval>;
   std::array<Vec3T<Interval>, 8> interval_rows;
   {
     const auto d = rows(double_query);

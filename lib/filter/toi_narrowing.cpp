@@ -9,6 +9,7 @@
 #include "exact/integer_poly.hpp"
 #include "filter/integer_query.hpp"
 #include "filter/volume_sign.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::filter {
 namespace {
@@ -56,8 +57,7 @@ template <class IntegerQuery, class Query>
 std::optional<TimeInterval> narrow_toi_in_cell(const Query& q, const VolumeRootCell& cell) {
   if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
   // The guess from V in long double (built from the doubles; only a guess).
-  using LongQuery = std::conditional_t<std::is_same_v<Query, VertexFaceQuery>, VertexFaceQueryT<long double>,
-                                       EdgeEdgeQueryT<long double>>;
+  using LongQuery = typename kinds::kind_of<Query>::template Query<long double>;
   std::array<Vec3T<long double>, 8> long_rows;
   {
     const auto r = rows(q);

@@ -83,6 +83,10 @@ inline RoundedDeterminant rounded_determinant(const Vec3& u, const Vec3& v, cons
               (std::fabs(vx_wy) + std::fabs(vy_wx)) * std::fabs(u.z)};
 }
 
+/// tau = fl(10 eps Q~), the bound of the comment above on a group's error (valid when
+/// Q~ >= T).
+inline double group_error_bound(double permanent_sum) { return (10 * 0x1p-53) * permanent_sum; }
+
 /// A computed group sum S~ and a certified bound on its error: |S~ - S| < error.
 struct CertifiedSum {
   double value;
@@ -93,9 +97,8 @@ struct CertifiedSum {
 /// Q~ >= T (`threshold`, from the largest entry), nothing otherwise (underflow could exceed
 /// it) or when a value overflowed.
 inline std::optional<CertifiedSum> certified_group(double sum, double permanent_sum, double threshold) {
-  constexpr double kEps = 0x1p-53;
   if (!(permanent_sum >= threshold)) return std::nullopt;  // underflow guard; also catches NaN
-  const double tau = (10 * kEps) * permanent_sum;
+  const double tau = group_error_bound(permanent_sum);
   if (!(tau < std::numeric_limits<double>::infinity()) || !(std::fabs(sum) < std::numeric_limits<double>::infinity()))
     return std::nullopt;
   return CertifiedSum{sum, tau};
@@ -106,9 +109,8 @@ inline std::optional<CertifiedSum> certified_group(double sum, double permanent_
 /// The same test as certified_group followed by a comparison with the bound, written out for
 /// the hot path (an overflow makes tau infinite or a comparison false: no sign).
 inline int certified_group_sign(double sum, double permanent_sum, double threshold) {
-  constexpr double kEps = 0x1p-53;
   if (!(permanent_sum >= threshold)) return 0;  // underflow guard, see above; also catches NaN
-  const double tau = (10 * kEps) * permanent_sum;
+  const double tau = group_error_bound(permanent_sum);
   if (sum > tau) return 1;
   if (sum < -tau) return -1;
   return 0;

@@ -154,12 +154,8 @@ std::array<RationalVec3, 8> rational_rows(const Query& q) {
 /// Method::exact contradicts is a bug in the construction or in the exact path: thrown as an
 /// internal error (exit 1) naming the instance, before anything is written.
 bool family_truth(const families::Instance& inst, const std::string& where) {
-  const auto [exact, toi] = std::visit([](const auto& q) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(q)>, VertexFaceQuery>)
-      return std::pair{vertex_face_ccd(q, Method::exact), vertex_face_toi(q, Method::exact)};
-    else
-      return std::pair{edge_edge_ccd(q, Method::exact), edge_edge_toi(q, Method::exact)};
-  }, inst.query);
+  const auto [exact, toi] = std::visit(
+      [](const auto& q) { return std::pair{ccd(q, Method::exact), exactccd::toi(q, Method::exact)}; }, inst.query);
   if (const std::optional<std::string> why = families::disagreement(inst, exact, toi))
     throw std::runtime_error("generate families: " + where + ": the construction and Method::exact disagree: " + *why);
   return inst.expected.value_or(exact);

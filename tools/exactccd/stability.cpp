@@ -62,14 +62,7 @@ std::vector<std::string> split(const std::string& list) {
 }
 
 bool answer(const families::AnyQuery& q, Method m) {
-  return std::visit(
-      [m](const auto& x) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, VertexFaceQuery>)
-          return vertex_face_ccd(x, m);
-        else
-          return edge_edge_ccd(x, m);
-      },
-      q);
+  return std::visit([m](const auto& x) { return ccd(x, m); }, q);
 }
 
 struct Cell {  // one (family, k): counts per method
