@@ -37,4 +37,48 @@ inline std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q) { retur
 /// See toi(const RationalVertexFaceQuery&).
 inline std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q) { return edge_edge_toi(q); }
 
+using RationalPointEdgeQuery = PointEdgeQueryT<mpq_class>;      ///< point-edge in rationals
+using RationalPointPointQuery = PointPointQueryT<mpq_class>;    ///< point-point in rationals
+using RationalEdgeEdge2dQuery = EdgeEdge2dQueryT<mpq_class>;    ///< 2D edge-edge in rationals
+using RationalPointEdge2dQuery = PointEdge2dQueryT<mpq_class>;  ///< 2D point-edge in rationals
+using RationalPointPoint2dQuery = PointPoint2dQueryT<mpq_class>;  ///< 2D point-point in rationals
+
+/// CcdParams with exact rational values: collision iff dist <= min_distance at some t in
+/// [0, tmax]; min_distance >= 0, tmax in (0, 1].
+struct RationalCcdParams {
+  mpq_class min_distance = 0;  ///< d >= 0
+  mpq_class tmax = 1;          ///< in (0, 1]
+};
+
+/// Exact minimum-separation CCD for rational coordinates, every kind (see ccd.hpp's
+/// CcdParams functions). Throws std::invalid_argument on a negative d or a tmax outside (0, 1].
+bool ccd(const RationalVertexFaceQuery& q, const RationalCcdParams& params);
+/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
+bool ccd(const RationalEdgeEdgeQuery& q, const RationalCcdParams& params);
+/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
+bool ccd(const RationalPointEdgeQuery& q, const RationalCcdParams& params);
+/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
+bool ccd(const RationalPointPointQuery& q, const RationalCcdParams& params);
+/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
+bool ccd(const RationalEdgeEdge2dQuery& q, const RationalCcdParams& params);
+/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
+bool ccd(const RationalPointEdge2dQuery& q, const RationalCcdParams& params);
+/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
+bool ccd(const RationalPointPoint2dQuery& q, const RationalCcdParams& params);
+
+/// The exact TOI for rational coordinates with a minimum separation and a time limit, every kind.
+std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q, const RationalCcdParams& params);
+/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
+std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q, const RationalCcdParams& params);
+/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
+std::optional<TimeInterval> toi(const RationalPointEdgeQuery& q, const RationalCcdParams& params);
+/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
+std::optional<TimeInterval> toi(const RationalPointPointQuery& q, const RationalCcdParams& params);
+/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
+std::optional<TimeInterval> toi(const RationalEdgeEdge2dQuery& q, const RationalCcdParams& params);
+/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
+std::optional<TimeInterval> toi(const RationalPointEdge2dQuery& q, const RationalCcdParams& params);
+/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
+std::optional<TimeInterval> toi(const RationalPointPoint2dQuery& q, const RationalCcdParams& params);
+
 }  // namespace exactccd

@@ -13,10 +13,12 @@ struct StageCounters {
   std::uint64_t interval = 0;          ///< interval arithmetic on the contact polynomials
   std::uint64_t integer = 0;           ///< exact integer arithmetic, small degree-4 kernel
   std::uint64_t exact = 0;             ///< exact fallback (GMP rationals, CGAL algebraic kernel)
+  std::uint64_t separating_direction = 0;  ///< minimum separation: a certified direction
+                                          ///< separates the swept primitives by more than d
   std::uint64_t toi_refined = 0;  ///< answer from the interval stage, TOI from a later stage
 
   /// Total number of queries counted.
-  std::uint64_t total() const { return volume_exclusion + static_predicates + interval + integer + exact; }
+  std::uint64_t total() const { return volume_exclusion + static_predicates + interval + integer + exact + separating_direction; }
 
   /// Adds another thread's counts.
   StageCounters& operator+=(const StageCounters& o) {
@@ -25,6 +27,7 @@ struct StageCounters {
     interval += o.interval;
     integer += o.integer;
     exact += o.exact;
+    separating_direction += o.separating_direction;
     toi_refined += o.toi_refined;
     return *this;
   }

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <tuple>
 
 namespace exactccd {
 
@@ -62,11 +64,113 @@ std::array<Vec3T<T>, 8> rows(const EdgeEdgeQueryT<T>& q) {
   return {q.a0_t0, q.a1_t0, q.b0_t0, q.b1_t0, q.a0_t1, q.a1_t1, q.b0_t1, q.b1_t1};
 }
 
-/// Builds a query from its eight points in benchmark row order.
-template <class Query, class T>
-Query from_rows(const std::array<Vec3T<T>, 8>& r) {
-  return Query{r[0], r[1], r[2], r[3], r[4], r[5], r[6], r[7]};
+/// A point or vector of the plane, for the 2D kinds.
+template <class T>
+struct Vec2T {
+  T x;  ///< first coordinate
+  T y;  ///< second coordinate
+};
+
+using Vec2 = Vec2T<double>;  ///< double coordinates in the plane
+
+/// Point-edge query: point p against segment (a, b), each at t = 0 and t = 1.
+/// Member order is the file row order: p_t0, a_t0, b_t0, p_t1, a_t1, b_t1.
+template <class T>
+struct PointEdgeQueryT {
+  Vec3T<T> p_t0;  ///< the point at t = 0
+  Vec3T<T> a_t0;  ///< the segment's first end at t = 0
+  Vec3T<T> b_t0;  ///< the segment's second end at t = 0
+  Vec3T<T> p_t1;  ///< the point at t = 1
+  Vec3T<T> a_t1;  ///< the segment's first end at t = 1
+  Vec3T<T> b_t1;  ///< the segment's second end at t = 1
+};
+
+/// Point-point query: point p against point q, each at t = 0 and t = 1.
+/// Member order is the file row order: p_t0, q_t0, p_t1, q_t1.
+template <class T>
+struct PointPointQueryT {
+  Vec3T<T> p_t0;  ///< the first point at t = 0
+  Vec3T<T> q_t0;  ///< the second point at t = 0
+  Vec3T<T> p_t1;  ///< the first point at t = 1
+  Vec3T<T> q_t1;  ///< the second point at t = 1
+};
+
+/// Edge-edge query in the plane; rows as EdgeEdgeQueryT with two coordinates.
+template <class T>
+struct EdgeEdge2dQueryT {
+  Vec2T<T> a0_t0;  ///< first endpoint of edge a at t = 0
+  Vec2T<T> a1_t0;  ///< second endpoint of edge a at t = 0
+  Vec2T<T> b0_t0;  ///< first endpoint of edge b at t = 0
+  Vec2T<T> b1_t0;  ///< second endpoint of edge b at t = 0
+  Vec2T<T> a0_t1;  ///< first endpoint of edge a at t = 1
+  Vec2T<T> a1_t1;  ///< second endpoint of edge a at t = 1
+  Vec2T<T> b0_t1;  ///< first endpoint of edge b at t = 1
+  Vec2T<T> b1_t1;  ///< second endpoint of edge b at t = 1
+};
+
+/// Point-edge query in the plane; rows as PointEdgeQueryT with two coordinates.
+template <class T>
+struct PointEdge2dQueryT {
+  Vec2T<T> p_t0;  ///< the point at t = 0
+  Vec2T<T> a_t0;  ///< the segment's first end at t = 0
+  Vec2T<T> b_t0;  ///< the segment's second end at t = 0
+  Vec2T<T> p_t1;  ///< the point at t = 1
+  Vec2T<T> a_t1;  ///< the segment's first end at t = 1
+  Vec2T<T> b_t1;  ///< the segment's second end at t = 1
+};
+
+/// Point-point query in the plane; rows as PointPointQueryT with two coordinates.
+template <class T>
+struct PointPoint2dQueryT {
+  Vec2T<T> p_t0;  ///< the first point at t = 0
+  Vec2T<T> q_t0;  ///< the second point at t = 0
+  Vec2T<T> p_t1;  ///< the first point at t = 1
+  Vec2T<T> q_t1;  ///< the second point at t = 1
+};
+
+using PointEdgeQuery = PointEdgeQueryT<double>;
+using PointPointQuery = PointPointQueryT<double>;
+using EdgeEdge2dQuery = EdgeEdge2dQueryT<double>;
+using PointEdge2dQuery = PointEdge2dQueryT<double>;
+using PointPoint2dQuery = PointPoint2dQueryT<double>;
+
+/// The points of a query in file row order (every point at t0, then every point at t1).
+template <class T>
+std::array<Vec3T<T>, 6> rows(const PointEdgeQueryT<T>& q) {
+  return {q.p_t0, q.a_t0, q.b_t0, q.p_t1, q.a_t1, q.b_t1};
 }
+template <class T>
+std::array<Vec3T<T>, 4> rows(const PointPointQueryT<T>& q) {
+  return {q.p_t0, q.q_t0, q.p_t1, q.q_t1};
+}
+template <class T>
+std::array<Vec2T<T>, 8> rows(const EdgeEdge2dQueryT<T>& q) {
+  return {q.a0_t0, q.a1_t0, q.b0_t0, q.b1_t0, q.a0_t1, q.a1_t1, q.b0_t1, q.b1_t1};
+}
+template <class T>
+std::array<Vec2T<T>, 6> rows(const PointEdge2dQueryT<T>& q) {
+  return {q.p_t0, q.a_t0, q.b_t0, q.p_t1, q.a_t1, q.b_t1};
+}
+template <class T>
+std::array<Vec2T<T>, 4> rows(const PointPoint2dQueryT<T>& q) {
+  return {q.p_t0, q.q_t0, q.p_t1, q.q_t1};
+}
+
+/// Builds a query from its points in file row order.
+template <class Query, class Point, std::size_t N>
+Query from_rows(const std::array<Point, N>& r) {
+  return std::apply([](const auto&... p) { return Query{p...}; }, r);
+}
+
+/// The question asked of a query beyond its primitives: do they come within `min_distance`
+/// of each other at some time in [0, tmax]? The defaults ask whether they touch during the
+/// whole step. Exact semantics: the query collides iff some t in [0, tmax] has
+/// dist(A(t), B(t)) <= min_distance (Euclidean distance between the closed primitives), and
+/// its time of impact is the earliest such t.
+struct CcdParams {
+  double min_distance = 0.0;  ///< d: finite, >= 0
+  double tmax = 1.0;          ///< the time limit: in (0, 1]
+};
 
 /// A certified enclosure [lo, hi] of an exact time in [0, 1]: lo <= t <= hi. The library
 /// returns the tightest such pair of doubles: lo == hi when t is itself a double, otherwise
