@@ -10,48 +10,23 @@
 // contact needs V(t) = 0, so the candidates shrink to the roots of V in [0,1].
 #include "exact/exact_ccd.hpp"
 
-#include <CGAL/Algebraic_kernel_d_1.h>
-#include <CGAL/Gmpq.h>
-#include <CGAL/Gmpz.h>
-
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <vector>
 
 #include "contact/contact_rule.hpp"
+#include "exact/algebraic_kernel.hpp"
 #include "exact/stack_budget.hpp"
 
 namespace exactccd::exact {
 namespace {
 
-using AlgebraicKernel = CGAL::Algebraic_kernel_d_1<CGAL::Gmpz>;
-using IntegerPoly = AlgebraicKernel::Polynomial_1;
-using Root = AlgebraicKernel::Algebraic_real_1;
-using Bound = AlgebraicKernel::Bound;
-
-/// The polynomial times the least common multiple of its coefficients' denominators: integer
-/// coefficients, the same roots and, the factor being positive, the same signs.
-template <int D>
-IntegerPoly integer_poly(const contact::Poly<mpq_class, D>& p) {
-  mpz_class common = 1;
-  for (const mpq_class& x : p.c) mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), x.get_den_mpz_t());
-  std::vector<CGAL::Gmpz> coefficients;
-  coefficients.reserve(D + 1);
-  for (const mpq_class& x : p.c) {
-    const mpz_class z = x.get_num() * (common / x.get_den());
-    coefficients.emplace_back(z.get_mpz_t());
-  }
-  return IntegerPoly(coefficients.begin(), coefficients.end());
-}
-
-Root rational_root(const mpq_class& x) { return Root(Bound(x.get_mpq_t())); }
+using namespace algebraic;
+using AlgebraicKernel = Kernel;
 
 /// Appends the real roots of a polynomial that is not identically zero lying in [0, 1].
 void append_roots_in_unit_interval(const AlgebraicKernel& kernel, const IntegerPoly& p,
                                    std::vector<Root>& out) {
-  if (CGAL::degree(p) == 0) return;  // a nonzero constant has no root
-  kernel.solve_1_object()(p, false, Bound(0), Bound(1), std::back_inserter(out));
+  append_roots(kernel, p, 0, 1, out);
 }
 
 /// Candidate times of docs/design.md, sorted increasingly and without repetition.
@@ -67,12 +42,7 @@ std::vector<Root> candidate_times(const AlgebraicKernel& kernel, const Polys& P)
   contact::for_each_in_plane_poly(P, [&](const auto& p) {
     if (!contact::is_zero(p)) append_roots_in_unit_interval(kernel, integer_poly(p), times);
   });
-  const auto compare = kernel.compare_1_object();
-  std::sort(times.begin(), times.end(),
-            [&](const Root& a, const Root& b) { return compare(a, b) == CGAL::SMALLER; });
-  times.erase(std::unique(times.begin(), times.end(),
-                          [&](const Root& a, const Root& b) { return compare(a, b) == CGAL::EQUAL; }),
-              times.end());
+  sort_unique(kernel, times);
   return times;
 }
 
@@ -91,31 +61,6 @@ std::optional<Root> earliest_contact(const Polys& P) {
   return std::nullopt;
 }
 
-/// The tightest double interval holding the algebraic number t in [0, 1]: [d, d] when t is the
-/// double d, otherwise two consecutive doubles.
-TimeInterval enclose(const AlgebraicKernel& kernel, const Root& t) {
-  // Relative precision 2^-64 is finer than half an ulp (2^-53 relative), so after outward
-  // rounding at most one double lies strictly between lo and hi.
-  const auto [lower, upper] = kernel.approximate_relative_1_object()(t, 64);
-  double lo = CGAL::to_interval(lower).first;
-  double hi = CGAL::to_interval(upper).second;
-  const auto compare = kernel.compare_1_object();
-  const auto compare_to = [&](double d) { return compare(t, Root(Bound(d))); };
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  while (std::nextafter(lo, inf) < hi) {  // step over the (at most two) doubles inside
-    const double mid = std::nextafter(lo, inf);
-    const CGAL::Comparison_result c = compare_to(mid);
-    if (c == CGAL::EQUAL) return {mid, mid};
-    if (c == CGAL::SMALLER)
-      hi = mid;
-    else
-      lo = mid;
-  }
-  if (compare_to(lo) == CGAL::EQUAL) return {lo, lo};
-  if (compare_to(hi) == CGAL::EQUAL) return {hi, hi};
-  return {lo, hi};
-}
-
 template <class Polys>
 std::optional<TimeInterval> earliest_toi(const Polys& P) {
   const std::optional<Root> t = earliest_contact(P);
@@ -130,9 +75,7 @@ std::size_t coefficient_bits(const Polys& P) {
   std::size_t bits = 0;
   const auto note = [&](const auto& p) {
     if (contact::is_zero(p)) return;
-    const IntegerPoly ip = integer_poly(p);
-    for (int i = 0; i <= CGAL::degree(ip); ++i)
-      bits = std::max(bits, static_cast<std::size_t>(ip[i].bit_size()));
+    bits = std::max(bits, algebraic::coefficient_bits(integer_poly(p)));
   };
   note(P.volume());
   contact::for_each_in_plane_poly(P, note);

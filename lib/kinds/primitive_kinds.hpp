@@ -18,6 +18,21 @@
 
 namespace exactccd::kinds {
 
+/// The pairs of closed features whose distances make up a kind's distance (docs/design.md,
+/// "Minimum separation"): dist(A, B) <= d iff one pair's condition holds.
+enum class FeaturePair {
+  point_point,     ///< points {0, 1}: |x1 - x0| <= d
+  point_edge,      ///< point 0 against the open edge (1, 2), projecting into it
+  point_triangle,  ///< point 0 against the open triangle (1, 2, 3), projecting into it
+  edge_edge,       ///< open edge (0, 1) against open edge (2, 3), closest points interior to both
+};
+
+/// One feature pair of a kind: its type and the indices of its points in the kind's point list.
+struct Feature {
+  FeaturePair pair;
+  std::array<int, 4> points;
+};
+
 /// Vertex-face: a point p against a triangle (a, b, c).
 struct VertexFace {
   template <class T>
@@ -31,6 +46,17 @@ struct VertexFace {
   /// The volume V = (b - a) . ((c - a) x (p - a)) as rows {base, u, v, w}: V = det[u - base,
   /// v - base, w - base] (stage 1, double-double signs, exact end signs).
   static constexpr std::array<int, 4> volume_rows{1, 2, 3, 0};
+  static constexpr int dimension = 3;     ///< coordinates per point
+  static constexpr int first_points = 1;  ///< points 0 .. first_points - 1 are primitive A
+  /// dist(p, triangle) <= d iff p is within d of a vertex, of an open edge it projects into,
+  /// or of the open triangle it projects into.
+  static constexpr std::array<Feature, 7> features{{{FeaturePair::point_triangle, {0, 1, 2, 3}},
+                                                     {FeaturePair::point_edge, {0, 1, 2, 0}},
+                                                     {FeaturePair::point_edge, {0, 2, 3, 0}},
+                                                     {FeaturePair::point_edge, {0, 3, 1, 0}},
+                                                     {FeaturePair::point_point, {0, 1, 0, 0}},
+                                                     {FeaturePair::point_point, {0, 2, 0, 0}},
+                                                     {FeaturePair::point_point, {0, 3, 0, 0}}}};
 };
 
 /// Edge-edge: edge (a0, a1) against edge (b0, b1).
@@ -45,6 +71,92 @@ struct EdgeEdge {
   static constexpr std::array<std::string_view, points> point_names{"a0", "a1", "b0", "b1"};
   /// V = (a1 - a0) . ((b0 - a0) x (b1 - a0)).
   static constexpr std::array<int, 4> volume_rows{0, 1, 2, 3};
+  static constexpr int dimension = 3;
+  static constexpr int first_points = 2;
+  /// dist(a, b) <= d iff the open edges' closest points are interior and within d, or an
+  /// endpoint is within d of the other edge (its interior or an endpoint).
+  static constexpr std::array<Feature, 9> features{{{FeaturePair::edge_edge, {0, 1, 2, 3}},
+                                                     {FeaturePair::point_edge, {0, 2, 3, 0}},
+                                                     {FeaturePair::point_edge, {1, 2, 3, 0}},
+                                                     {FeaturePair::point_edge, {2, 0, 1, 0}},
+                                                     {FeaturePair::point_edge, {3, 0, 1, 0}},
+                                                     {FeaturePair::point_point, {0, 2, 0, 0}},
+                                                     {FeaturePair::point_point, {0, 3, 0, 0}},
+                                                     {FeaturePair::point_point, {1, 2, 0, 0}},
+                                                     {FeaturePair::point_point, {1, 3, 0, 0}}}};
+};
+
+/// Point-edge: a point p against a segment (a, b).
+struct PointEdge {
+  template <class T>
+  using Query = PointEdgeQueryT<T>;
+  static constexpr std::string_view name = "point-edge";
+  static constexpr std::string_view short_name = "pe";
+  static constexpr std::string_view function = "point_edge";
+  static constexpr int points = 3;
+  static constexpr std::array<std::string_view, points> point_names{"p", "a", "b"};
+  static constexpr int dimension = 3;
+  static constexpr int first_points = 1;
+  static constexpr std::array<Feature, 3> features{{{FeaturePair::point_edge, {0, 1, 2, 0}},
+                                                     {FeaturePair::point_point, {0, 1, 0, 0}},
+                                                     {FeaturePair::point_point, {0, 2, 0, 0}}}};
+};
+
+/// Point-point: a point p against a point q.
+struct PointPoint {
+  template <class T>
+  using Query = PointPointQueryT<T>;
+  static constexpr std::string_view name = "point-point";
+  static constexpr std::string_view short_name = "pp";
+  static constexpr std::string_view function = "point_point";
+  static constexpr int points = 2;
+  static constexpr std::array<std::string_view, points> point_names{"p", "q"};
+  static constexpr int dimension = 3;
+  static constexpr int first_points = 1;
+  static constexpr std::array<Feature, 1> features{{{FeaturePair::point_point, {0, 1, 0, 0}}}};
+};
+
+/// Edge-edge in the plane. The features are those of EdgeEdge: with every z = 0 its edge-edge
+/// pair is the crossing of the two segments (the lines' distance is 0).
+struct EdgeEdge2d {
+  template <class T>
+  using Query = EdgeEdge2dQueryT<T>;
+  static constexpr std::string_view name = "edge-edge-2d";
+  static constexpr std::string_view short_name = "ee2";
+  static constexpr std::string_view function = "edge_edge_2d";
+  static constexpr int points = 4;
+  static constexpr std::array<std::string_view, points> point_names{"a0", "a1", "b0", "b1"};
+  static constexpr int dimension = 2;
+  static constexpr int first_points = 2;
+  static constexpr auto features = EdgeEdge::features;
+};
+
+/// Point-edge in the plane.
+struct PointEdge2d {
+  template <class T>
+  using Query = PointEdge2dQueryT<T>;
+  static constexpr std::string_view name = "point-edge-2d";
+  static constexpr std::string_view short_name = "pe2";
+  static constexpr std::string_view function = "point_edge_2d";
+  static constexpr int points = 3;
+  static constexpr std::array<std::string_view, points> point_names{"p", "a", "b"};
+  static constexpr int dimension = 2;
+  static constexpr int first_points = 1;
+  static constexpr auto features = PointEdge::features;
+};
+
+/// Point-point in the plane.
+struct PointPoint2d {
+  template <class T>
+  using Query = PointPoint2dQueryT<T>;
+  static constexpr std::string_view name = "point-point-2d";
+  static constexpr std::string_view short_name = "pp2";
+  static constexpr std::string_view function = "point_point_2d";
+  static constexpr int points = 2;
+  static constexpr std::array<std::string_view, points> point_names{"p", "q"};
+  static constexpr int dimension = 2;
+  static constexpr int first_points = 1;
+  static constexpr auto features = PointPoint::features;
 };
 
 /// The kind of a query type (double, rational, interval or integer coordinates alike).
@@ -58,6 +170,26 @@ template <class T>
 struct KindOf<EdgeEdgeQueryT<T>> {
   using type = EdgeEdge;
 };
+template <class T>
+struct KindOf<PointEdgeQueryT<T>> {
+  using type = PointEdge;
+};
+template <class T>
+struct KindOf<PointPointQueryT<T>> {
+  using type = PointPoint;
+};
+template <class T>
+struct KindOf<EdgeEdge2dQueryT<T>> {
+  using type = EdgeEdge2d;
+};
+template <class T>
+struct KindOf<PointEdge2dQueryT<T>> {
+  using type = PointEdge2d;
+};
+template <class T>
+struct KindOf<PointPoint2dQueryT<T>> {
+  using type = PointPoint2d;
+};
 /// The kind of a query type.
 template <class Query>
 using kind_of = typename KindOf<std::decay_t<Query>>::type;
@@ -67,6 +199,19 @@ template <class F>
 constexpr void for_each_kind(F&& f) {
   f(VertexFace{});
   f(EdgeEdge{});
+}
+
+/// Calls f(Kind{}) for every kind of the minimum-separation questions (CcdParams), in the
+/// order of the CLI's --kind values: vf, ee, pe, pp, ee2, pe2, pp2.
+template <class F>
+constexpr void for_each_separation_kind(F&& f) {
+  f(VertexFace{});
+  f(EdgeEdge{});
+  f(PointEdge{});
+  f(PointPoint{});
+  f(EdgeEdge2d{});
+  f(PointEdge2d{});
+  f(PointPoint2d{});
 }
 
 }  // namespace exactccd::kinds

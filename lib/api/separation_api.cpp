@@ -1,0 +1,183 @@
+// The public entry points with CcdParams (minimum separation, time limit) for every kind:
+// validation and dispatch.
+//   d = 0, filtered: the contact filter of filtered_ccd.hpp (a point is a zero-length edge, a
+//     2D query has z = 0: the edge-edge filter answers point-edge, point-point and 2D kinds),
+//     its TOI cut at tmax;
+//   d > 0, filtered: a certified separating direction (separating_direction.hpp), else the
+//     exact path;
+//   exact: exact::toi for vertex-face and edge-edge at d = 0 (the reference of the contact
+//     question), separation::exact_toi otherwise (an independent derivation at d = 0).
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "exact/exact_ccd.hpp"
+#include "exact/rational_query.hpp"
+#include "exactccd/ccd.hpp"
+#include "exactccd/rational.hpp"
+#include "filter/filtered_ccd.hpp"
+#include "filter/fp_environment.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "separation/exact_separation.hpp"
+#include "separation/separating_direction.hpp"
+
+namespace exactccd {
+namespace {
+
+template <class Query>
+std::string function_name(bool want_toi) {
+  return "exactccd::" + std::string(kinds::kind_of<Query>::function) + (want_toi ? "_toi" : "_ccd");
+}
+
+template <class V>
+bool finite_point(const V& v) {
+  if constexpr (std::is_same_v<V, Vec2>)
+    return std::isfinite(v.x) && std::isfinite(v.y);
+  else
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// Throws std::invalid_argument naming the function on a non-finite coordinate, a d that is
+/// negative or not finite, a tmax outside (0, 1] or a method that is not exact.
+template <class Query>
+void validate(const Query& q, const CcdParams& p, Method method, bool want_toi) {
+  for (const auto& v : rows(q))
+    if (!finite_point(v))
+      throw std::invalid_argument(function_name<Query>(want_toi) +
+                                  ": non-finite coordinate (NaN or infinity) in the query");
+  if (!(std::isfinite(p.min_distance) && p.min_distance >= 0))
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": min_distance must be finite and >= 0, not " +
+                                std::to_string(p.min_distance));
+  if (!(p.tmax > 0 && p.tmax <= 1))
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": tmax must be in (0, 1], not " +
+                                std::to_string(p.tmax));
+  if (!is_exact_method(method))
+    throw std::invalid_argument(function_name<Query>(want_toi) +
+                                ": only Method::filtered and Method::exact answer a question with CcdParams");
+}
+
+Vec3 lift(const Vec2& v) { return {v.x, v.y, 0.0}; }
+Vec3 lift(const Vec3& v) { return v; }
+
+/// The contact (d = 0) question of a query as an edge-edge query with the same answer and TOI:
+/// a point is a zero-length edge, and a 2D query lies in the plane z = 0.
+template <class Query>
+EdgeEdgeQuery as_edge_edge(const Query& q) {
+  const auto r = rows(q);
+  constexpr int P = kinds::kind_of<Query>::points;
+  std::array<Vec3, 8> e;
+  for (int at = 0; at < 2; ++at) {
+    const auto point = [&](int i) { return lift(r[at * P + i]); };
+    if constexpr (P == 4) {
+      for (int i = 0; i < 4; ++i) e[at * 4 + i] = point(i);
+    } else if constexpr (P == 3) {  // point-edge: (p, p) against (a, b)
+      e[at * 4 + 0] = e[at * 4 + 1] = point(0);
+      e[at * 4 + 2] = point(1);
+      e[at * 4 + 3] = point(2);
+    } else {  // point-point: (p, p) against (q, q)
+      e[at * 4 + 0] = e[at * 4 + 1] = point(0);
+      e[at * 4 + 2] = e[at * 4 + 3] = point(1);
+    }
+  }
+  return from_rows<EdgeEdgeQuery>(e);
+}
+
+/// The contact filter for any kind.
+template <class Query>
+std::optional<TimeInterval> touch_filtered(const Query& q, bool want_toi, StageCounters* counters) {
+  if constexpr (std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>)
+    return filter::filtered(q, want_toi, counters);
+  else
+    return filter::filtered(as_edge_edge(q), want_toi, counters);
+}
+
+/// The TOI restricted to [0, tmax]: the exact time t lies in [lo, hi] (lo == hi, or lo < t < hi
+/// with no double between them), so for a double tmax, t <= tmax iff hi <= tmax (or lo <= tmax
+/// when lo == hi == t).
+std::optional<TimeInterval> cut(const std::optional<TimeInterval>& t, double tmax) {
+  if (!t) return t;
+  const bool within = t->lo == t->hi ? t->lo <= tmax : t->hi <= tmax;
+  return within ? t : std::nullopt;
+}
+
+template <class Query>
+std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method method, bool want_toi,
+                                   StageCounters* counters) {
+  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  validate(q, p, method, want_toi);
+  const bool whole_step = p.tmax == 1.0;
+  constexpr bool touch_kind = std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>;
+  if (p.min_distance == 0 && method == Method::filtered)
+    return cut(touch_filtered(q, want_toi || !whole_step, counters), p.tmax);
+  if constexpr (touch_kind) {
+    if (p.min_distance == 0) {  // Method::exact
+      if (!want_toi && whole_step)
+        return exact::ccd(exact::to_rational(q)) ? std::optional(TimeInterval{}) : std::nullopt;
+      return cut(exact::toi(exact::to_rational(q)), p.tmax);
+    }
+  }
+  if (method == Method::filtered) {
+    if (separation::separated_beyond(q, p.min_distance)) {
+      if (counters) ++counters->separating_direction;
+      return std::nullopt;
+    }
+    if (counters) ++counters->exact;
+  }
+  return separation::exact_toi(exact::to_rational(q), RationalCcdParams{mpq_class(p.min_distance), mpq_class(p.tmax)});
+}
+
+template <class Query>
+void validate(const RationalCcdParams& p) {
+  if (!(p.min_distance >= 0))
+    throw std::invalid_argument("exactccd::toi: min_distance must be >= 0");
+  if (!(p.tmax > 0 && p.tmax <= 1)) throw std::invalid_argument("exactccd::toi: tmax must be in (0, 1]");
+}
+
+template <class Query>
+std::optional<TimeInterval> rational_answer(const Query& q, const RationalCcdParams& p) {
+  const filter::DefaultFpEnvironment fp_environment;  // CGAL's kernel filters with intervals
+  validate<Query>(p);
+  using Kind = kinds::kind_of<Query>;
+  if constexpr (std::is_same_v<Kind, kinds::VertexFace> || std::is_same_v<Kind, kinds::EdgeEdge>)
+    if (p.min_distance == 0 && p.tmax == 1) return exact::toi(q);
+  return separation::exact_toi(q, p);
+}
+
+}  // namespace
+
+#define EXACTCCD_DEFINE_ENTRY_POINTS(Query, stem)                                                    \
+  bool stem##_ccd(const Query& q, const CcdParams& p, Method m) {                                    \
+    return answer(q, p, m, false, nullptr).has_value();                                              \
+  }                                                                                                  \
+  bool stem##_ccd(const Query& q, const CcdParams& p, Method m, StageCounters& c) {                  \
+    return answer(q, p, m, false, &c).has_value();                                                   \
+  }                                                                                                  \
+  std::optional<TimeInterval> stem##_toi(const Query& q, const CcdParams& p, Method m) {             \
+    return answer(q, p, m, true, nullptr);                                                           \
+  }                                                                                                  \
+  std::optional<TimeInterval> stem##_toi(const Query& q, const CcdParams& p, Method m, StageCounters& c) { \
+    return answer(q, p, m, true, &c);                                                                \
+  }
+EXACTCCD_DEFINE_ENTRY_POINTS(VertexFaceQuery, vertex_face)
+EXACTCCD_DEFINE_ENTRY_POINTS(EdgeEdgeQuery, edge_edge)
+EXACTCCD_DEFINE_ENTRY_POINTS(PointEdgeQuery, point_edge)
+EXACTCCD_DEFINE_ENTRY_POINTS(PointPointQuery, point_point)
+EXACTCCD_DEFINE_ENTRY_POINTS(EdgeEdge2dQuery, edge_edge_2d)
+EXACTCCD_DEFINE_ENTRY_POINTS(PointEdge2dQuery, point_edge_2d)
+EXACTCCD_DEFINE_ENTRY_POINTS(PointPoint2dQuery, point_point_2d)
+#undef EXACTCCD_DEFINE_ENTRY_POINTS
+
+#define EXACTCCD_DEFINE_RATIONAL(Query)                                                               \
+  bool ccd(const Query& q, const RationalCcdParams& p) { return rational_answer(q, p).has_value(); } \
+  std::optional<TimeInterval> toi(const Query& q, const RationalCcdParams& p) { return rational_answer(q, p); }
+EXACTCCD_DEFINE_RATIONAL(RationalVertexFaceQuery)
+EXACTCCD_DEFINE_RATIONAL(RationalEdgeEdgeQuery)
+EXACTCCD_DEFINE_RATIONAL(RationalPointEdgeQuery)
+EXACTCCD_DEFINE_RATIONAL(RationalPointPointQuery)
+EXACTCCD_DEFINE_RATIONAL(RationalEdgeEdge2dQuery)
+EXACTCCD_DEFINE_RATIONAL(RationalPointEdge2dQuery)
+EXACTCCD_DEFINE_RATIONAL(RationalPointPoint2dQuery)
+#undef EXACTCCD_DEFINE_RATIONAL
+
+}  // namespace exactccd

@@ -1,0 +1,125 @@
+// Minimum separation as a union of feature-pair conditions (docs/design.md, "Minimum
+// separation"). For a kind's feature pairs (kinds::Feature), dist(A(t), B(t)) <= d iff one
+// term holds at t, a term being "f(t) <= 0 and g(t) > 0 for each of its g":
+//   point-point (x, y):      f = |y - x|^2 - d^2;
+//   point-edge (p; a, b):    e = b - a, r = p - a: g = r.e, e.e - r.e (p projects into the open
+//                            edge; e != 0 follows), f = |r x e|^2 - d^2 |e|^2;
+//   point-triangle (p; abc): n = (b - a) x (c - a): g = the three barycentric numerators
+//                            n.(e_i x (p - v_i)) (p projects into the open triangle; n != 0
+//                            follows), f = (n.(p - a))^2 - d^2 |n|^2;
+//   edge-edge (a0a1; b0b1):  w = da x db, r = b0 - a0, s = (r x db).w, u = (r x da).w:
+//                            g = s, |w|^2 - s, u, |w|^2 - u (the lines' closest points are
+//                            interior to both edges; w != 0 follows), f = (w.r)^2 - d^2 |w|^2.
+// Written once, templated on the number type (mpq_class on the exact path).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "contact/polynomial.hpp"
+#include "contact/vec3_ops.hpp"
+#include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
+
+namespace exactccd::separation {
+
+/// Every term's polynomials are stored with the largest degree (6).
+template <class NT>
+using Poly6 = contact::Poly<NT, 6>;
+
+/// One feature pair's condition: distance <= 0 and every positive[i] > 0 (i < positives).
+template <class NT>
+struct Term {
+  Poly6<NT> distance;
+  std::array<Poly6<NT>, 4> positive;
+  int positives = 0;
+};
+
+/// The polynomial p of degree D <= 6 as a Poly6.
+template <class NT, int D>
+Poly6<NT> widen(const contact::Poly<NT, D>& p) {
+  auto r = Poly6<NT>::zero();
+  for (int k = 0; k <= D; ++k) r.c[k] = p.c[k];
+  return r;
+}
+
+/// A query's points in NT, all at t0 then all at t1, in 3D (2D kinds get z = 0: distances and
+/// every condition are those of the plane).
+template <class NT, class Query>
+auto points3(const Query& q) {
+  const auto r = rows(q);
+  std::array<Vec3T<NT>, r.size()> out;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    if constexpr (kinds::kind_of<Query>::dimension == 2)
+      out[i] = {NT(r[i].x), NT(r[i].y), NT(0)};
+    else
+      out[i] = {NT(r[i].x), NT(r[i].y), NT(r[i].z)};
+  }
+  return out;
+}
+
+/// The terms of a kind's feature pairs for a query with points `x` (points3) and d^2 = `d2`.
+template <class Kind, class NT, std::size_t N>
+std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2) {
+  static_assert(N == 2 * Kind::points);
+  using contact::cross;
+  using contact::dot;
+  // The motion of the vector from point i to point j.
+  const auto rel = [&](int i, int j) {
+    const Vec3T<NT>&u0 = x[i], &u1 = x[i + Kind::points], &v0 = x[j], &v1 = x[j + Kind::points];
+    return Vec3T<contact::Poly<NT, 1>>{contact::linear_motion(NT(v0.x - u0.x), NT(v1.x - u1.x)),
+                                       contact::linear_motion(NT(v0.y - u0.y), NT(v1.y - u1.y)),
+                                       contact::linear_motion(NT(v0.z - u0.z), NT(v1.z - u1.z))};
+  };
+  const contact::Poly<NT, 0> dd{{d2}};
+  std::vector<Term<NT>> out;
+  out.reserve(Kind::features.size());
+  for (const kinds::Feature& f : Kind::features) {
+    const auto [i, j, k, l] = f.points;
+    Term<NT> t;
+    switch (f.pair) {
+      case kinds::FeaturePair::point_point: {
+        const auto r = rel(i, j);
+        t.distance = widen(dot(r, r) - dd);
+        break;
+      }
+      case kinds::FeaturePair::point_edge: {
+        const auto r = rel(j, i), e = rel(j, k);
+        const auto re = dot(r, e), ee = dot(e, e);
+        const auto c = cross(r, e);
+        t.distance = widen(dot(c, c) - dd * ee);
+        t.positive[0] = widen(re);
+        t.positive[1] = widen(ee - re);
+        t.positives = 2;
+        break;
+      }
+      case kinds::FeaturePair::point_triangle: {
+        const auto n = cross(rel(j, k), rel(j, l));
+        const auto h = dot(n, rel(j, i));
+        t.distance = widen(h * h - dd * dot(n, n));
+        const std::array<std::array<int, 2>, 3> edges{{{j, k}, {k, l}, {l, j}}};
+        for (int e = 0; e < 3; ++e)
+          t.positive[e] = widen(dot(n, cross(rel(edges[e][0], edges[e][1]), rel(edges[e][0], i))));
+        t.positives = 3;
+        break;
+      }
+      case kinds::FeaturePair::edge_edge: {
+        const auto da = rel(i, j), db = rel(k, l), r = rel(i, k);
+        const auto w = cross(da, db);
+        const auto ww = dot(w, w), h = dot(w, r);
+        const auto s = dot(cross(r, db), w), u = dot(cross(r, da), w);
+        t.distance = widen(h * h - dd * ww);
+        t.positive[0] = widen(s);
+        t.positive[1] = widen(ww - s);
+        t.positive[2] = widen(u);
+        t.positive[3] = widen(ww - u);
+        t.positives = 4;
+        break;
+      }
+    }
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+}  // namespace exactccd::separation

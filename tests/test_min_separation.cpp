@@ -1,0 +1,145 @@
+// Minimum separation and the time limit (CcdParams): the exact path's term decomposition
+// (separation/separation_terms.hpp) against the independent contact path at d = 0, and the
+// filtered method against the exact one for every kind and random d. The hand-derived cases
+// are in test_min_separation_catalogue.cpp, the distance checks with CGAL's constructions in
+// test_min_separation_properties.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "exact/exact_ccd.hpp"
+#include "exact/rational_query.hpp"
+#include "exactccd/exactccd.hpp"
+#include "exactccd/rational.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "separation/exact_separation.hpp"
+#include "test_support.hpp"
+
+namespace exactccd {
+namespace {
+
+std::string show(const std::optional<TimeInterval>& t) {
+  if (!t) return "none";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "[%.17g, %.17g]", t->lo, t->hi);
+  return buf;
+}
+
+/// Every query of the shared sample and degenerate random ones: the separation terms at d = 0
+/// give exactly the contact path's TOI (two derivations of the same answer: the terms square
+/// the distances, the contact rule intersects in the plane).
+template <class Query>
+void expect_terms_match_contact_path(const std::vector<Query>& queries) {
+  const RationalCcdParams touch;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const auto q = exact::to_rational(queries[i]);
+    EXPECT_EQ(show(separation::exact_toi(q, touch)), show(exact::toi(q))) << "query " << i;
+  }
+}
+
+TEST(MinSeparation, TermsAtZeroDistanceEqualTheContactPathOnDegenerateQueries) {
+  expect_terms_match_contact_path(testing::degenerate_queries<VertexFaceQuery>(11, 400));
+  expect_terms_match_contact_path(testing::degenerate_queries<EdgeEdgeQuery>(12, 400));
+}
+
+TEST(MinSeparation, TermsAtZeroDistanceEqualTheContactPathOnTheSharedSample) {
+  int files = 0;
+  for (const char* kind : {"vertex-face", "edge-edge"}) {
+    for (const char* name : {"data_0_0.csv", "data_0_1.csv"}) {
+      const auto sample = testing::load_sample(std::string("unit-tests/") + kind + "/" + name);
+      if (!sample) continue;
+      ++files;
+      for (std::size_t i = 0; i < sample->size(); i += 7) {  // every 7th: the exact paths are slow
+        const RationalCcdParams touch;
+        if (std::string(kind) == "vertex-face") {
+          const auto q = io::vertex_face_query(*sample, i);
+          EXPECT_EQ(show(separation::exact_toi(q, touch)), show(exact::toi(q))) << kind << name << " " << i;
+        } else {
+          const auto q = io::edge_edge_query(*sample, i);
+          EXPECT_EQ(show(separation::exact_toi(q, touch)), show(exact::toi(q))) << kind << name << " " << i;
+        }
+      }
+    }
+  }
+  if (files == 0) GTEST_SKIP() << "shared sample queries absent (" << EXACTCCD_SAMPLE_QUERIES_DIR << ")";
+}
+
+/// Random points of a kind on a small grid with repeated points and planar motion mixed in.
+template <class Query>
+std::vector<Query> grid_queries(std::uint64_t seed, std::size_t n) {
+  using Kind = kinds::kind_of<Query>;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> coord(-2, 2), choice(0, 5);
+  std::vector<Query> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    auto r = rows(Query{});
+    for (auto& p : r) {
+      p.x = coord(rng) * 0.25;
+      p.y = coord(rng) * 0.25;
+      if constexpr (Kind::dimension == 3) p.z = coord(rng) * 0.25;
+    }
+    const int c = choice(rng);
+    if (c == 0) r[Kind::points] = r[0];                         // a point that does not move
+    if (c == 1 && Kind::points > 2) r[2] = r[1];                // two points coincide at t0
+    if (c == 2)
+      for (int i = Kind::first_points; i < Kind::points; ++i) r[i + Kind::points] = r[i];  // B static
+    out.push_back(from_rows<Query>(r));
+  }
+  return out;
+}
+
+template <class Query>
+void expect_filtered_equals_exact(std::uint64_t seed, std::size_t n) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const std::vector<double> fixed_d{0.0, 0.25, 0.5, std::ldexp(1.0, -1074), 1e300};
+  std::size_t i = 0;
+  for (const Query& q : grid_queries<Query>(seed, n)) {
+    const double d = i % 3 == 0 ? fixed_d[i / 3 % fixed_d.size()] : unit(rng) * 0.75;
+    const double tmax = i % 4 == 0 ? 1.0 : unit(rng) > 0.5 ? 0.5 : std::nextafter(unit(rng), 2.0);
+    const CcdParams p{d, tmax};
+    const auto f = toi(q, p, Method::filtered), e = toi(q, p, Method::exact);
+    EXPECT_EQ(show(f), show(e)) << kinds::kind_of<Query>::name << " query " << i << " d " << d << " tmax " << tmax;
+    EXPECT_EQ(ccd(q, p, Method::filtered), e.has_value()) << kinds::kind_of<Query>::name << " query " << i;
+    ++i;
+  }
+}
+
+TEST(MinSeparation, FilteredEqualsExactForEveryKind) {
+  expect_filtered_equals_exact<VertexFaceQuery>(21, 250);
+  expect_filtered_equals_exact<EdgeEdgeQuery>(22, 250);
+  expect_filtered_equals_exact<PointEdgeQuery>(23, 400);
+  expect_filtered_equals_exact<PointPointQuery>(24, 400);
+  expect_filtered_equals_exact<EdgeEdge2dQuery>(25, 300);
+  expect_filtered_equals_exact<PointEdge2dQuery>(26, 400);
+  expect_filtered_equals_exact<PointPoint2dQuery>(27, 400);
+}
+
+TEST(MinSeparation, DefaultParamsGiveTheContactAnswers) {
+  for (const auto& q : testing::degenerate_queries<VertexFaceQuery>(31, 300))
+    EXPECT_EQ(show(vertex_face_toi(q, CcdParams{})), show(vertex_face_toi(q)));
+  for (const auto& q : testing::degenerate_queries<EdgeEdgeQuery>(32, 300))
+    EXPECT_EQ(show(edge_edge_toi(q, CcdParams{})), show(edge_edge_toi(q)));
+}
+
+TEST(MinSeparation, BadQuestionsAreRefused) {
+  const PointPointQuery q{{0, 0, 0}, {1, 0, 0}, {0, 0, 0}, {1, 0, 0}};
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  for (const CcdParams p : {CcdParams{-1e-300, 1}, CcdParams{nan, 1}, CcdParams{inf, 1}, CcdParams{0, 0},
+                            CcdParams{0, -0.5}, CcdParams{0, std::nextafter(1.0, 2.0)}, CcdParams{0, nan}}) {
+    EXPECT_THROW(point_point_ccd(q, p), std::invalid_argument);
+    EXPECT_THROW(point_point_toi(q, p, Method::exact), std::invalid_argument);
+  }
+  EXPECT_THROW(point_point_ccd(q, {}, Method::naive), std::invalid_argument);
+  PointEdge2dQuery bad{};
+  bad.b_t1.y = nan;
+  EXPECT_THROW(point_edge_2d_toi(bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace exactccd
