@@ -16,8 +16,20 @@ typedef enum exactccd_status {
   EXACTCCD_OK = 0,               /* answered */
   EXACTCCD_ERROR_NON_FINITE = 1, /* a coordinate is NaN or infinite */
   EXACTCCD_ERROR_NULL = 2,       /* a required pointer is NULL */
-  EXACTCCD_ERROR_INTERNAL = 3    /* unexpected failure (e.g. out of memory) */
+  EXACTCCD_ERROR_INTERNAL = 3,   /* unexpected failure (e.g. out of memory) */
+  EXACTCCD_ERROR_PARAMETER = 4   /* unknown kind, min_distance < 0 or not finite, tmax not in (0, 1] */
 } exactccd_status;
+
+/* The primitive kinds (the values of the CLI's --kind in this order: vf ee pe pp ee2 pe2 pp2). */
+typedef enum exactccd_kind {
+  EXACTCCD_VERTEX_FACE = 0,    /* p, a, b, c: 4 points, 3D */
+  EXACTCCD_EDGE_EDGE = 1,      /* a0, a1, b0, b1: 4 points, 3D */
+  EXACTCCD_POINT_EDGE = 2,     /* p, a, b: 3 points, 3D */
+  EXACTCCD_POINT_POINT = 3,    /* p, q: 2 points, 3D */
+  EXACTCCD_EDGE_EDGE_2D = 4,   /* a0, a1, b0, b1: 4 points, x y per point */
+  EXACTCCD_POINT_EDGE_2D = 5,  /* p, a, b: 3 points, x y per point */
+  EXACTCCD_POINT_POINT_2D = 6  /* p, q: 2 points, x y per point */
+} exactccd_kind;
 
 /* *collides = 1 when the vertex meets the closed triangle for some t in [0, 1], else 0. */
 exactccd_status exactccd_vertex_face_ccd(const double query[24], int* collides);
@@ -33,6 +45,21 @@ exactccd_status exactccd_vertex_face_toi(const double query[24], int* collides, 
 /* Earliest time of impact of an edge-edge query; see exactccd_vertex_face_toi. */
 exactccd_status exactccd_edge_edge_toi(const double query[24], int* collides, double* lo,
                                        double* hi);
+
+/* The number of doubles of a query of `kind`: every point at t0, then every point at t1, with
+ * 3 (or, for the 2D kinds, 2) coordinates each; 0 for an unknown kind. */
+int exactccd_query_size(exactccd_kind kind);
+
+/* Minimum separation and a time limit, any kind: *collides = 1 when the primitives come within
+ * distance min_distance (>= 0) of each other at some t in [0, tmax] (tmax in (0, 1]), else 0.
+ * min_distance = 0, tmax = 1 is the question of the functions above. */
+exactccd_status exactccd_ccd(exactccd_kind kind, const double* query, double min_distance, double tmax,
+                             int* collides);
+
+/* As exactccd_ccd, with the earliest such t in [*lo, *hi] when *collides is 1 (the tightest
+ * double interval; [0, 0] when the initial distance is <= min_distance). */
+exactccd_status exactccd_toi(exactccd_kind kind, const double* query, double min_distance, double tmax,
+                             int* collides, double* lo, double* hi);
 
 /* A static description of a status, e.g. for error messages. */
 const char* exactccd_status_string(exactccd_status status);
