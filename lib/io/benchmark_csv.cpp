@@ -51,8 +51,12 @@ std::size_t significant_digits(const std::string& field) {
 ParseError::ParseError(const std::string& source, std::size_t line, const std::string& what)
     : InputError(source, source + ":" + std::to_string(line) + ": " + what, true), line_(line) {}
 
-BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name) {
+BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name, QueryLayout layout) {
+  if (layout.rows < 1 || layout.rows > 8 || (layout.dimension != 2 && layout.dimension != 3))
+    throw std::invalid_argument("read_benchmark_csv: unsupported layout");
+  const int columns = layout.columns();
   BenchmarkQueries result;
+  result.layout = layout;
   std::array<RationalVec3, 8> current;
   int row_in_query = 0;
   bool query_truth = false;
@@ -68,12 +72,12 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
     std::stringstream ss(line);
     for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
     if (!line.empty() && line.back() == ',') fields.emplace_back();
-    if (fields.size() != 7)
+    if (fields.size() != static_cast<std::size_t>(columns))
       throw ParseError(source_name, line_number,
-                       "expected 7 comma-separated integers, found " + std::to_string(fields.size()) +
-                           " fields");
+                       "expected " + std::to_string(columns) + " comma-separated integers, found " +
+                           std::to_string(fields.size()) + " fields");
     std::array<mpz_class, 7> v;
-    for (int i = 0; i < 7; ++i) {
+    for (int i = 0; i < columns; ++i) {
       const FieldError error = parse_integer(fields[i], v[i]);
       if (error == FieldError::not_an_integer)
         throw ParseError(source_name, line_number,
@@ -84,16 +88,17 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
                              " digits, more than the limit of " + std::to_string(kMaxFieldBits) +
                              " bits per numerator or denominator (README, \"Input files\")");
     }
-    std::array<mpq_class, 3> coordinate;
-    for (int c = 0; c < 3; ++c) {
+    std::array<mpq_class, 3> coordinate{0, 0, 0};
+    for (int c = 0; c < layout.dimension; ++c) {
       if (v[2 * c + 1] == 0)
         throw ParseError(source_name, line_number, "zero denominator in field " + std::to_string(2 * c + 2));
       coordinate[c] = mpq_class(v[2 * c], v[2 * c + 1]);
       coordinate[c].canonicalize();
     }
-    if (v[6] != 0 && v[6] != 1)
+    const mpz_class& truth_field = v[columns - 1];
+    if (truth_field != 0 && truth_field != 1)
       throw ParseError(source_name, line_number, "truth must be 0 or 1");
-    const bool truth = v[6] == 1;
+    const bool truth = truth_field == 1;
     if (row_in_query == 0) {
       query_truth = truth;
       query_first_line = line_number;
@@ -104,7 +109,7 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
     }
     current[row_in_query] = {coordinate[0], coordinate[1], coordinate[2]};
     current_lines[row_in_query] = line_number;
-    if (++row_in_query == 8) {
+    if (++row_in_query == layout.rows) {
       result.rows.push_back(current);
       result.truth.push_back(query_truth);
       result.lines.push_back(current_lines);
@@ -115,7 +120,7 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
   if (row_in_query != 0)
     throw ParseError(source_name, last_row_line,
                      "incomplete query: the input ends after " + std::to_string(row_in_query) +
-                         " of its 8 rows (it starts on line " + std::to_string(query_first_line) +
+                         " of its " + std::to_string(layout.rows) + " rows (it starts on line " + std::to_string(query_first_line) +
                          ")");
   return result;
 }
@@ -126,8 +131,10 @@ void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries) {
                                 " queries but " + std::to_string(queries.truth.size()) +
                                 " truth values");
   for (std::size_t i = 0; i < queries.size(); ++i)
-    for (const RationalVec3& p : queries.rows[i]) {
-      for (const mpq_class* c : {&p.x, &p.y, &p.z}) out << c->get_num() << ',' << c->get_den() << ',';
+    for (int k = 0; k < queries.layout.rows; ++k) {
+      const RationalVec3& p = queries.rows[i][k];
+      for (const mpq_class* c : {&p.x, &p.y, &p.z})
+        if (c != &p.z || queries.layout.dimension == 3) out << c->get_num() << ',' << c->get_den() << ',';
       out << (queries.truth[i] ? 1 : 0) << '\n';
     }
 }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "exactccd/rational.hpp"
@@ -38,10 +39,27 @@ class ParseError : public InputError {
 /// that): README, "Input files", gives the measured figures and the command.
 constexpr std::size_t kMaxFieldBits = 4096;
 
-/// Queries of one benchmark file: rows[i] are query i's eight points in row order, truth[i]
-/// its published ground truth.
+/// The shape of a query file: rows per query (each point at t0, then at t1) and coordinates per
+/// row (3; 2 for the 2D kinds). A row has 2 * dimension + 1 columns: num,den per coordinate,
+/// then the truth. The public benchmark's layout is {8, 3}.
+struct QueryLayout {
+  int rows = 8;       ///< 2 * the kind's points: 8, 6 or 4
+  int dimension = 3;  ///< 3, or 2
+  /// Columns per row.
+  int columns() const { return 2 * dimension + 1; }
+};
+
+/// The layout of a kind's files (kinds::VertexFace, ...).
+template <class Kind>
+constexpr QueryLayout layout_of() {
+  return {2 * Kind::points, Kind::dimension};
+}
+
+/// Queries of one benchmark file: rows[i] are query i's points in row order (the first
+/// layout.rows of the array; a 2D point has z = 0), truth[i] its published ground truth.
 struct BenchmarkQueries {
-  std::vector<std::array<RationalVec3, 8>> rows;  ///< eight points per query, in row order
+  QueryLayout layout;                             ///< rows per query and coordinates per row
+  std::vector<std::array<RationalVec3, 8>> rows;  ///< layout.rows points per query, in row order
   std::vector<bool> truth;                        ///< the truth column, one per query
   /// The 1-based line of each row, per query (filled by read_benchmark_csv; empty for queries
   /// built in memory).
@@ -51,17 +69,33 @@ struct BenchmarkQueries {
 };
 
 /// Parses a benchmark CSV. Throws ParseError naming source_name and the line on: a wrong
-/// number of columns, a non-integer field, an integer of more than kMaxFieldBits bits, a zero
-/// denominator, a truth other than 0/1 or not repeated on all 8 rows of a query, or a row
-/// count that is not a multiple of 8. Rationals are canonicalized. Tolerates CR line ends,
-/// spaces around fields, blank lines and a UTF-8 byte order mark at the start. An input
+/// number of columns (layout.columns()), a non-integer field, an integer of more than
+/// kMaxFieldBits bits, a zero denominator, a truth other than 0/1 or not repeated on all rows of
+/// a query, or a row count that is not a multiple of layout.rows. Rationals are canonicalized.
+/// Tolerates CR line ends, spaces around fields, blank lines and a UTF-8 byte order mark at the start. An input
 /// without rows gives no queries (callers reading a file reject that: README, "Input files").
-BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name);
+BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name,
+                                    QueryLayout layout = {});
 
 /// Writes queries in the benchmark format, each rational as its exact canonical
 /// numerator,denominator pair. read_benchmark_csv reads back the same queries. Throws
 /// std::invalid_argument when queries.truth and queries.rows differ in size.
 void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries);
+
+/// Query i of `queries` as a rational query of the kind of `Query` (e.g.
+/// RationalPointEdgeQuery), whose layout must be the file's.
+template <class Query>
+Query query_at(const BenchmarkQueries& queries, std::size_t i) {
+  const auto& r = queries.rows.at(i);
+  auto out = rows(Query{});
+  static_assert(out.size() <= 8);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].x = r[k].x;
+    out[k].y = r[k].y;
+    if constexpr (std::is_same_v<std::decay_t<decltype(out[k])>, RationalVec3>) out[k].z = r[k].z;
+  }
+  return from_rows<Query>(out);
+}
 
 /// Query i of `queries` as a rational vertex-face query (rows in benchmark order).
 RationalVertexFaceQuery vertex_face_query(const BenchmarkQueries& queries, std::size_t i);
