@@ -20,6 +20,7 @@
 #include "filter/fp_environment.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "separation/exact_separation.hpp"
+#include "separation/interval_separation.hpp"
 #include "separation/separating_direction.hpp"
 
 namespace exactccd {
@@ -121,6 +122,11 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method me
     if (separation::separated_beyond(q, p.min_distance)) {
       if (counters) ++counters->separating_direction;
       return std::nullopt;
+    }
+    const separation::IntervalVerdict verdict = separation::interval_separation(q, p.min_distance, p.tmax);
+    if (verdict.decided) {
+      if (counters) ++counters->interval;
+      return verdict.toi;
     }
     if (counters) ++counters->exact;
   }

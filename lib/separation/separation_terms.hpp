@@ -58,12 +58,51 @@ auto points3(const Query& q) {
   return out;
 }
 
+/// One feature pair's condition from the motions of the vectors between its points:
+/// calls out(f, g...) with the term's distance polynomial f and its strict conditions g
+/// (docs/design.md, 4b.1). `rel(i, j)` is the vector from point i to point j (a Vec3T of
+/// polynomials in t, or of numbers: the values at one time), `dd` is d^2 of the same type.
+/// Written once for the polynomials (terms) and for the values at one time (term_at).
+template <class Rel, class DD, class Out>
+void feature_condition(const kinds::Feature& f, Rel&& rel, const DD& dd, Out&& out) {
+  using contact::cross;
+  using contact::dot;
+  const auto [i, j, k, l] = f.points;
+  switch (f.pair) {
+    case kinds::FeaturePair::point_point: {
+      const auto r = rel(i, j);
+      out(dot(r, r) - dd);
+      return;
+    }
+    case kinds::FeaturePair::point_edge: {
+      const auto r = rel(j, i), e = rel(j, k);
+      const auto re = dot(r, e), ee = dot(e, e);
+      const auto c = cross(r, e);
+      out(dot(c, c) - dd * ee, re, ee - re);
+      return;
+    }
+    case kinds::FeaturePair::point_triangle: {
+      const auto n = cross(rel(j, k), rel(j, l));
+      const auto h = dot(n, rel(j, i));
+      out(h * h - dd * dot(n, n), dot(n, cross(rel(j, k), rel(j, i))), dot(n, cross(rel(k, l), rel(k, i))),
+          dot(n, cross(rel(l, j), rel(l, i))));
+      return;
+    }
+    case kinds::FeaturePair::edge_edge: {
+      const auto da = rel(i, j), db = rel(k, l), r = rel(i, k);
+      const auto w = cross(da, db);
+      const auto ww = dot(w, w), h = dot(w, r);
+      const auto s = dot(cross(r, db), w), u = dot(cross(r, da), w);
+      out(h * h - dd * ww, s, ww - s, u, ww - u);
+      return;
+    }
+  }
+}
+
 /// The terms of a kind's feature pairs for a query with points `x` (points3) and d^2 = `d2`.
 template <class Kind, class NT, std::size_t N>
 std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2) {
   static_assert(N == 2 * Kind::points);
-  using contact::cross;
-  using contact::dot;
   // The motion of the vector from point i to point j.
   const auto rel = [&](int i, int j) {
     const Vec3T<NT>&u0 = x[i], &u1 = x[i + Kind::points], &v0 = x[j], &v1 = x[j + Kind::points];
@@ -74,52 +113,27 @@ std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2) {
   const contact::Poly<NT, 0> dd{{d2}};
   std::vector<Term<NT>> out;
   out.reserve(Kind::features.size());
-  for (const kinds::Feature& f : Kind::features) {
-    const auto [i, j, k, l] = f.points;
-    Term<NT> t;
-    switch (f.pair) {
-      case kinds::FeaturePair::point_point: {
-        const auto r = rel(i, j);
-        t.distance = widen(dot(r, r) - dd);
-        break;
-      }
-      case kinds::FeaturePair::point_edge: {
-        const auto r = rel(j, i), e = rel(j, k);
-        const auto re = dot(r, e), ee = dot(e, e);
-        const auto c = cross(r, e);
-        t.distance = widen(dot(c, c) - dd * ee);
-        t.positive[0] = widen(re);
-        t.positive[1] = widen(ee - re);
-        t.positives = 2;
-        break;
-      }
-      case kinds::FeaturePair::point_triangle: {
-        const auto n = cross(rel(j, k), rel(j, l));
-        const auto h = dot(n, rel(j, i));
-        t.distance = widen(h * h - dd * dot(n, n));
-        const std::array<std::array<int, 2>, 3> edges{{{j, k}, {k, l}, {l, j}}};
-        for (int e = 0; e < 3; ++e)
-          t.positive[e] = widen(dot(n, cross(rel(edges[e][0], edges[e][1]), rel(edges[e][0], i))));
-        t.positives = 3;
-        break;
-      }
-      case kinds::FeaturePair::edge_edge: {
-        const auto da = rel(i, j), db = rel(k, l), r = rel(i, k);
-        const auto w = cross(da, db);
-        const auto ww = dot(w, w), h = dot(w, r);
-        const auto s = dot(cross(r, db), w), u = dot(cross(r, da), w);
-        t.distance = widen(h * h - dd * ww);
-        t.positive[0] = widen(s);
-        t.positive[1] = widen(ww - s);
-        t.positive[2] = widen(u);
-        t.positive[3] = widen(ww - u);
-        t.positives = 4;
-        break;
-      }
-    }
-    out.push_back(std::move(t));
-  }
+  for (const kinds::Feature& f : Kind::features)
+    feature_condition(f, rel, dd, [&](const auto& distance, const auto&... positive) {
+      Term<NT> t;
+      t.distance = widen(distance);
+      int k = 0;
+      ((t.positive[k++] = widen(positive)), ...);
+      t.positives = k;
+      out.push_back(std::move(t));
+    });
   return out;
+}
+
+/// The value of feature f's distance polynomial at one time, from the points' positions at
+/// that time (`at[i]`, the kind's points): evaluating the geometry directly keeps the rounding
+/// relative to the primitives' local size, where the power-basis coefficients of f cancel.
+template <class NT, std::size_t P>
+NT distance_at(const kinds::Feature& f, const std::array<Vec3T<NT>, P>& at, const NT& d2) {
+  const auto rel = [&](int i, int j) { return contact::operator-(at[j], at[i]); };
+  NT value;
+  feature_condition(f, rel, d2, [&](const NT& distance, const auto&...) { value = distance; });
+  return value;
 }
 
 }  // namespace exactccd::separation

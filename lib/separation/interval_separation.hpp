@@ -1,0 +1,248 @@
+// The filtered method's interval stage for minimum separation (docs/design.md, 4b.3). The
+// terms of separation_terms.hpp are built in interval arithmetic (CGAL::Interval_nt under
+// upward rounding) from the double coordinates, so every coefficient encloses the exact one and
+// every evaluation below encloses the exact value (inclusion property; overflow gives infinite
+// bounds, which never certify; the caller's DefaultFpEnvironment has cleared flush-to-zero).
+//
+// A term is *excluded* on a time cell when its f is certainly > 0 or one of its g certainly
+// <= 0 on the whole cell: it holds nowhere there. The stage
+//  1. decides t = 0: a term certainly holding (f <= 0, every g > 0) gives TOI [0, 0];
+//  2. walks the cells of [0, tmax] in time order, splitting a cell while a term is not excluded;
+//     cells where every term is excluded are free of contact;
+//  3. in the first cell where one term i is left, if its g are certainly > 0 on the cell, its f
+//     certainly > 0 at the cell's start a and < 0 at its end b, and f' certainly != 0 on the
+//     cell, then f_i has exactly one root t* in (a, b), every other term is excluded, [0, a] is
+//     free: t* is the earliest contact (by 4b.2 it is a root of f_i where term i holds: f_i < 0
+//     just after t*, g_i > 0). Halving at doubles m with certain signs of f_i(m) narrows (a, b)
+//     to two consecutive doubles, the tight TOI (t* is not a double: f_i has a nonzero sign at
+//     every double examined);
+//  4. if all of [0, tmax] is free: no collision.
+// Anything else (a sign that intervals cannot certify: tangent passes, a root that is a double,
+// two terms meeting at t*) returns "undecided" and the exact path answers.
+#pragma once
+
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "exactccd/rational.hpp"
+#include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "separation/separation_terms.hpp"
+
+namespace exactccd::separation {
+
+/// The interval stage's verdict: decided (the TOI, or nullopt for no collision) or not.
+struct IntervalVerdict {
+  bool decided = false;
+  std::optional<TimeInterval> toi;
+};
+
+namespace interval_detail {
+
+using I = CGAL::Interval_nt<false>;
+
+template <int D>
+I evaluate(const contact::Poly<I, D>& p, const I& t) {
+  I r = p.c[D];
+  for (int k = D - 1; k >= 0; --k) r = r * t + p.c[k];
+  return r;
+}
+
+/// 1 / -1 when the interval is certainly positive / negative, 0 otherwise.
+inline int certain_sign(const I& x) { return x.inf() > 0 ? 1 : x.sup() < 0 ? -1 : 0; }
+
+inline contact::Poly<I, 5> derivative(const Poly6<I>& p) {
+  contact::Poly<I, 5> r;
+  for (int k = 1; k <= 6; ++k) r.c[k - 1] = p.c[k] * I(k);
+  return r;
+}
+
+/// An enclosure of p over the cell [a, b] (t = [a, b], m its midpoint): where p' has a certain
+/// sign on the cell, p is monotone there and its range is the hull of p(a) and p(b); otherwise
+/// the mean-value form p(m) + p'(t) (t - m) intersected with Horner's scheme over t (both
+/// enclose the range; the first shrinks with the cell's width squared near a root, where
+/// Horner's scheme over power-basis coefficients suffers from cancellation).
+inline I range(const Poly6<I>& p, double a, double b) {
+  const I t(a, b);
+  const I slope = evaluate(derivative(p), t);
+  if (certain_sign(slope) != 0) {
+    const I pa = evaluate(p, I(a)), pb = evaluate(p, I(b));
+    return I(std::min(pa.inf(), pb.inf()), std::max(pa.sup(), pb.sup()));
+  }
+  const double m = a + (b - a) / 2;  // any point of the cell will do
+  const I mean_value = evaluate(p, I(m)) + slope * (t - I(m));
+  const I horner = evaluate(p, t);
+  return I(std::max(mean_value.inf(), horner.inf()), std::min(mean_value.sup(), horner.sup()));
+}
+
+/// The term holds nowhere in the cell [a, b] (certainly).
+inline bool excluded(const Term<I>& term, double a, double b) {
+  if (range(term.distance, a, b).inf() > 0) return true;
+  for (int k = 0; k < term.positives; ++k)
+    if (range(term.positive[k], a, b).sup() <= 0) return true;
+  return false;
+}
+
+/// The term holds at t (certainly): f <= 0 and every g > 0.
+inline bool holds(const Term<I>& term, const I& t) {
+  if (evaluate(term.distance, t).sup() > 0) return false;
+  for (int k = 0; k < term.positives; ++k)
+    if (evaluate(term.positive[k], t).inf() <= 0) return false;
+  return true;
+}
+
+/// The exact sign of feature f's distance polynomial at the double m, from the positions at m
+/// (x: the query's rows as intervals, exact points): in interval arithmetic when that is
+/// certain, else exactly in rationals (a root at a double gives 0).
+template <std::size_t N>
+int distance_sign_at(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, double d, double m,
+                     double* approximation = nullptr) {
+  constexpr std::size_t P = N / 2;
+  std::array<Vec3T<I>, P> at;
+  const I mi(m);
+  const auto move = [&](const I& x0, const I& x1) { return x0 + mi * (x1 - x0); };
+  for (std::size_t p = 0; p < P; ++p)
+    at[p] = {move(x[p].x, x[p + P].x), move(x[p].y, x[p + P].y), move(x[p].z, x[p + P].z)};
+  const I value = distance_at(f, at, I(d) * I(d));
+  if (approximation) *approximation = CGAL::to_double(value);
+  const int s = certain_sign(value);
+  if (s != 0) return s;
+  // Exactly, in integers: every double is an integer times 2^e; scaling every length (the
+  // coordinates and d) by one power of two 2^S multiplies f, homogeneous of degree 2, 4 or 6 in
+  // lengths, by a positive factor, so its sign is unchanged. With E the least ulp exponent of
+  // the coordinates and d, and m = M 2^-K, the positions at m scaled by 2^(K - E) are the
+  // integers X0 2^K + M (X1 - X0). Constant polynomials carry the values (their operators
+  // evaluate at once; mpz_class's expression templates would dangle in feature_condition's
+  // `auto` temporaries).
+  using Z = contact::Poly<mpz_class, 0>;
+  const auto ulp_exponent = [](double v) {
+    int e = 0;
+    std::frexp(v, &e);
+    return v == 0 ? std::numeric_limits<int>::max() : e - 53;
+  };
+  int E = ulp_exponent(d);
+  for (std::size_t i = 0; i < N; ++i)
+    for (const I* c : {&x[i].x, &x[i].y, &x[i].z}) E = std::min(E, ulp_exponent(c->inf()));
+  if (E == std::numeric_limits<int>::max()) E = 0;  // everything is zero
+  const auto scaled = [&](double v) {  // v 2^-E, an integer
+    if (v == 0) return mpz_class(0);
+    int e = 0;
+    const double f = std::frexp(v, &e);
+    mpz_class z(std::ldexp(f, 53));  // |f| 2^53 < 2^53: exact
+    return mpz_class(z << static_cast<mp_bitcnt_t>(e - 53 - E));
+  };
+  int em = 0;
+  const double fm = std::frexp(m, &em);  // m = M 2^-K, K = 53 - em >= 0 for m in (0, 1)
+  const mpz_class M(std::ldexp(fm, 53));
+  const mp_bitcnt_t K = static_cast<mp_bitcnt_t>(53 - em);
+  std::array<Vec3T<Z>, P> exact;
+  const auto move_exactly = [&](const I& x0, const I& x1) {  // rows are points: inf() is the double
+    const mpz_class X0 = scaled(x0.inf());
+    return Z{{mpz_class((X0 << K) + M * (scaled(x1.inf()) - X0))}};
+  };
+  for (std::size_t p = 0; p < P; ++p)
+    exact[p] = {move_exactly(x[p].x, x[p + P].x), move_exactly(x[p].y, x[p + P].y),
+                move_exactly(x[p].z, x[p + P].z)};
+  const mpz_class D = scaled(d) << K;
+  return sgn(distance_at(f, exact, Z{{mpz_class(D * D)}}).c[0]);
+}
+
+}  // namespace interval_detail
+
+/// The interval stage for a query of any kind with min_distance d and time limit tmax (valid,
+/// checked by the caller). Needs round-to-nearest on entry (it installs upward rounding itself).
+template <class Query>
+IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
+  using namespace interval_detail;
+  using Kind = kinds::kind_of<Query>;
+  const CGAL::Protect_FPU_rounding<true> upward;
+  const auto x = points3<I>(q);
+  const std::vector<Term<I>> terms = separation::terms<Kind>(x, I(d) * I(d));
+  const IntervalVerdict undecided{};
+  // 1. t = 0.
+  bool all_fail_at_zero = true;
+  for (const Term<I>& term : terms) {
+    if (holds(term, I(0))) return {true, TimeInterval{0.0, 0.0}};
+    all_fail_at_zero = all_fail_at_zero && excluded(term, 0.0, 0.0);
+  }
+  if (!all_fail_at_zero) return undecided;
+  // 2. Cells in time order (a stack of right halves).
+  constexpr int kMaxDepth = 48;
+  struct Cell {
+    double a, b;
+    int depth;
+  };
+  std::array<Cell, kMaxDepth + 2> stack;
+  int top = 0;
+  stack[top++] = {0.0, tmax, 0};
+  while (top > 0) {
+    const Cell cell = stack[--top];
+    int alive = -1, alive_count = 0;
+    for (std::size_t i = 0; i < terms.size(); ++i)
+      if (!excluded(terms[i], cell.a, cell.b)) {
+        alive = static_cast<int>(i);
+        ++alive_count;
+      }
+    if (alive_count == 0) continue;  // free of contact
+    if (alive_count == 1) {
+      // 3. One term left: a simple sign change of f with every g positive?
+      const Term<I>& term = terms[alive];
+      bool g_positive = true;
+      for (int k = 0; k < term.positives && g_positive; ++k)
+        g_positive = range(term.positive[k], cell.a, cell.b).inf() > 0;
+      if (g_positive && certain_sign(evaluate(term.distance, I(cell.a))) > 0 &&
+          certain_sign(evaluate(term.distance, I(cell.b))) < 0 &&
+          certain_sign(evaluate(derivative(term.distance), I(cell.a, cell.b))) != 0) {
+        const kinds::Feature& feature = Kind::features[alive];
+        // Narrowing: f(a) > 0 > f(b) around the single root. Each step examines one double m
+        // strictly inside (a, b), chosen by regula falsi on midpoint approximations of f(a) and
+        // f(b) (any choice is valid: only the certain sign at m is used), bisecting instead when
+        // the last two steps did not halve the cell, so that the cell shrinks geometrically.
+        double a = cell.a, b = cell.b;
+        double fa = 0, fb = 0;
+        distance_sign_at(feature, x, d, a, &fa);
+        distance_sign_at(feature, x, d, b, &fb);
+        double previous_width = b - a;
+        bool bisect = false;
+        while (true) {
+          const double next_a = std::nextafter(a, std::numeric_limits<double>::infinity());
+          if (!(next_a < b)) break;  // consecutive doubles
+          double m = a + (b - a) / 2;
+          if (!bisect && fa > 0 && fb < 0) m = a + (b - a) * (fa / (fa - fb));
+          if (!(a < m && m < b)) m = a + (b - a) / 2;
+          if (!(a < m && m < b)) m = next_a;
+          double approximation = 0;
+          const int s = distance_sign_at(feature, x, d, m, &approximation);
+          if (s == 0) return {true, TimeInterval{m, m}};  // f(m) = 0 exactly: t* = m
+          // The approximate value at m with the certain sign, for the next estimate.
+          const double fm = s * std::max(std::abs(approximation), 0x1p-1000);
+          if (s > 0) {
+            a = m;
+            fa = fm;
+          } else {
+            b = m;
+            fb = fm;
+          }
+          bisect = !bisect && (b - a) > previous_width / 2;
+          previous_width = b - a;
+        }
+        if (std::nextafter(a, std::numeric_limits<double>::infinity()) != b) return undecided;
+        return {true, TimeInterval{a, b}};
+      }
+    }
+    if (cell.depth >= kMaxDepth) return undecided;
+    const double m = cell.a + (cell.b - cell.a) / 2;
+    if (!(cell.a < m && m < cell.b)) return undecided;
+    stack[top++] = {m, cell.b, cell.depth + 1};  // right half, examined after the left one
+    stack[top++] = {cell.a, m, cell.depth + 1};
+  }
+  return {true, std::nullopt};  // 4. every cell of [0, tmax] is free
+}
+
+}  // namespace exactccd::separation
