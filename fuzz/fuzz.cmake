@@ -14,7 +14,7 @@ function(exactccd_add_plugin name source)
   set_target_properties(${name} PROPERTIES PREFIX "" LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/plugins
                         CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
   target_compile_options(${name} PRIVATE ${EXACTCCD_WARNINGS})
-  target_link_libraries(${name} PRIVATE exactccd)
+  target_link_libraries(${name} PRIVATE exactccd_tools)
   target_link_options(${name} PRIVATE -Wl,--exclude-libs,ALL)
 endfunction()
 exactccd_add_plugin(naive_plugin fuzz/plugins/naive_plugin.cpp)

@@ -45,6 +45,7 @@
 #include "filter/static_stage.hpp"
 #include "filter/toi_narrowing.hpp"
 #include "filter/volume_exclusion.hpp"
+#include "tools/methods.hpp"
 
 #ifndef EXACTCCD_SAMPLE_QUERIES_DIR
 #define EXACTCCD_SAMPLE_QUERIES_DIR "/work/shared/data/sample-queries"
@@ -130,11 +131,15 @@ auto with_query(const TestQuery& q, F&& f) {
   return f(from_rows<EdgeEdgeQuery>(q.rows));
 }
 
-bool call_ccd(const TestQuery& q, Method m, StageCounters* counters) {
+/// M: exactccd::Method (the public entry points) or tools::Method (also the baselines); ccd()
+/// and toi() are the overloads of M's namespace.
+template <class M>
+bool call_ccd(const TestQuery& q, M m, StageCounters* counters) {
   return with_query(q, [&](const auto& query) { return counters ? ccd(query, m, *counters) : ccd(query, m); });
 }
 
-std::optional<TimeInterval> call_toi(const TestQuery& q, Method m, StageCounters* counters) {
+template <class M>
+std::optional<TimeInterval> call_toi(const TestQuery& q, M m, StageCounters* counters) {
   return with_query(q, [&](const auto& query) { return counters ? toi(query, m, *counters) : toi(query, m); });
 }
 
@@ -871,7 +876,7 @@ TEST(FilteredAgreement, RandomDegenerateGridQueries) {
         family_collisions += c.exact.ccd;
         bool naive = false;
         try {
-          naive = call_ccd(q, Method::naive, nullptr);
+          naive = call_ccd(q, tools::Method::naive, nullptr);
         } catch (const std::exception& ex) {
           ADD_FAILURE() << "naive threw " << ex.what() << " on " << describe(q);
         }
@@ -1040,7 +1045,7 @@ TEST(FilteredInput, NonFiniteCoordinatesThrowInvalidArgumentForEveryMethod) {
       for (double bad : bad_values) {
         TestQuery q = simple_query(kind);
         coordinate(q.rows, slot) = bad;
-        for (Method m : {Method::filtered, Method::exact, Method::naive}) {
+        for (tools::Method m : {tools::Method::filtered, tools::Method::exact, tools::Method::naive}) {
           const std::string what = std::string(kind_name(kind)) + ", method " +
                                    std::to_string(static_cast<int>(m)) + ", coordinate " +
                                    std::to_string(slot) + " = " + hex(bad);
@@ -1197,7 +1202,7 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
     ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
     call_toi(q, Method::filtered, &counters);
     ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
-    for (Method m : {Method::exact, Method::naive}) {
+    for (tools::Method m : {tools::Method::exact, tools::Method::naive}) {
       call_ccd(q, m, nullptr);
       ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
       call_toi(q, m, nullptr);

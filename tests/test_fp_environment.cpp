@@ -4,11 +4,12 @@
 //
 // The references are computed once under the default environment; each environment then
 // re-answers every query of the shared sample and of the bundled data through every entry point
-// (C++ with and without counters, every exact method and the naive baseline, rational queries,
-// the C API, the Eigen overloads) and every scene function on the bundled scenes. After every
-// call the control state (MXCSR control bits, x87 control word, fegetround) must be the one the
-// test installed. A fault-injection test throws std::bad_alloc from every allocation a query
-// makes in turn, and checks the caller's environment after each throw.
+// (C++ with and without counters, both exact methods and the tools library's naive baseline,
+// rational queries, the C API, the Eigen overloads) and every scene function on the bundled
+// scenes. After every call the control state (MXCSR control bits, x87 control word,
+// fegetround) must be the one the test installed. A fault-injection test throws std::bad_alloc
+// from every allocation a query makes in turn, and checks the caller's environment after each
+// throw.
 #include <gtest/gtest.h>
 
 #include <cfenv>
@@ -28,6 +29,7 @@
 #include "filter/fp_environment.hpp"
 #include "io/benchmark_csv.hpp"
 #include "io/obj.hpp"
+#include "tools/methods.hpp"
 #include "fuzz/families.hpp"
 
 #if defined(__x86_64__) || defined(_M_X64)
@@ -264,8 +266,10 @@ std::vector<std::optional<TimeInterval>> answers(const Query& q, bool with_exact
   }
   if (!q.doubles) return out;
   const std::array<Vec3, 8>& d = *q.doubles;
-  std::vector<Method> methods{Method::filtered, Method::naive};
-  if (with_exact) methods.push_back(Method::exact);
+  // Every method by tools::Method: the library's through its entry points, and the naive
+  // baseline (tools library), which installs the default environment alike.
+  std::vector<tools::Method> methods{tools::Method::filtered, tools::Method::naive};
+  if (with_exact) methods.push_back(tools::Method::exact);
   double flat[24];
   for (int i = 0; i < 8; ++i) flat[3 * i] = d[i].x, flat[3 * i + 1] = d[i].y, flat[3 * i + 2] = d[i].z;
   const auto e = [&](int i) { return Eigen::Vector3d(d[i].x, d[i].y, d[i].z); };
@@ -277,15 +281,15 @@ std::vector<std::optional<TimeInterval>> answers(const Query& q, bool with_exact
     check("vertex_face_ccd");
     out.push_back(vertex_face_toi(v));
     check("vertex_face_toi");
-    for (Method m : methods) {
+    for (tools::Method m : methods) {
       StageCounters c;
-      out.push_back(boolean(vertex_face_ccd(v, m)));
+      out.push_back(boolean(tools::ccd(v, m)));
       check("vertex_face_ccd(method)");
-      out.push_back(boolean(vertex_face_ccd(v, m, c)));
+      out.push_back(boolean(tools::ccd(v, m, c)));
       check("vertex_face_ccd(method, counters)");
-      out.push_back(vertex_face_toi(v, m));
+      out.push_back(tools::toi(v, m));
       check("vertex_face_toi(method)");
-      out.push_back(vertex_face_toi(v, m, c));
+      out.push_back(tools::toi(v, m, c));
       check("vertex_face_toi(method, counters)");
     }
     EXPECT_EQ(exactccd_vertex_face_ccd(flat, &collides), EXACTCCD_OK);
@@ -304,15 +308,15 @@ std::vector<std::optional<TimeInterval>> answers(const Query& q, bool with_exact
     check("edge_edge_ccd");
     out.push_back(edge_edge_toi(v));
     check("edge_edge_toi");
-    for (Method m : methods) {
+    for (tools::Method m : methods) {
       StageCounters c;
-      out.push_back(boolean(edge_edge_ccd(v, m)));
+      out.push_back(boolean(tools::ccd(v, m)));
       check("edge_edge_ccd(method)");
-      out.push_back(boolean(edge_edge_ccd(v, m, c)));
+      out.push_back(boolean(tools::ccd(v, m, c)));
       check("edge_edge_ccd(method, counters)");
-      out.push_back(edge_edge_toi(v, m));
+      out.push_back(tools::toi(v, m));
       check("edge_edge_toi(method)");
-      out.push_back(edge_edge_toi(v, m, c));
+      out.push_back(tools::toi(v, m, c));
       check("edge_edge_toi(method, counters)");
     }
     EXPECT_EQ(exactccd_edge_edge_ccd(flat, &collides), EXACTCCD_OK);
@@ -420,10 +424,10 @@ TEST_P(EveryEnvironment, ThrowingEntryPointsRestoreTheEnvironment) {
   vf.p_t1.z = std::numeric_limits<double>::quiet_NaN();
   EdgeEdgeQuery ee{};
   ee.b1_t0.x = std::numeric_limits<double>::infinity();
-  for (Method m : {Method::filtered, Method::exact, Method::naive}) {
-    EXPECT_THROW(vertex_face_ccd(vf, m), std::invalid_argument);
+  for (tools::Method m : {tools::Method::filtered, tools::Method::exact, tools::Method::naive}) {
+    EXPECT_THROW(tools::ccd(vf, m), std::invalid_argument);
     EXPECT_TRUE(control_state() == installed) << env.name << " after vertex_face_ccd threw";
-    EXPECT_THROW(edge_edge_toi(ee, m), std::invalid_argument);
+    EXPECT_THROW(tools::toi(ee, m), std::invalid_argument);
     EXPECT_TRUE(control_state() == installed) << env.name << " after edge_edge_toi threw";
   }
   double flat[24] = {};

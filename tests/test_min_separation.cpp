@@ -186,7 +186,7 @@ TEST(MinSeparation, BadQuestionsAreRefused) {
     EXPECT_THROW(point_point_ccd(q, p), std::invalid_argument);
     EXPECT_THROW(point_point_toi(q, p, Method::exact), std::invalid_argument);
   }
-  EXPECT_THROW(point_point_ccd(q, {}, Method::naive), std::invalid_argument);
+  EXPECT_THROW(point_point_ccd(q, {}, static_cast<Method>(7)), std::invalid_argument);  // no such method
   PointEdge2dQuery bad{};
   bad.b_t1.y = nan;
   EXPECT_THROW(point_edge_2d_toi(bad), std::invalid_argument);

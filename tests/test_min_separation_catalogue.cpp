@@ -813,8 +813,8 @@ void expect_invalid_arguments_throw(const Query& q) {
       }
   }
   // Only the exact methods answer queries with parameters (ccd.hpp).
-  EXPECT_THROW(ccd(q, ok, Method::naive), std::invalid_argument);
-  EXPECT_THROW(toi(q, ok, Method::naive), std::invalid_argument);
+  EXPECT_THROW(ccd(q, ok, static_cast<Method>(7)), std::invalid_argument);  // no such method
+  EXPECT_THROW(toi(q, ok, static_cast<Method>(7)), std::invalid_argument);
 }
 
 TEST(MinSeparationInvalidArguments, VertexFace) { expect_invalid_arguments_throw(vf_cases().front().q); }

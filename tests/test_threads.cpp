@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "test_support.hpp"
+#include "tools/methods.hpp"
 
 namespace exactccd {
 namespace {
@@ -69,8 +70,8 @@ TEST(Threads, ExactMethodIsThreadSafeToo) {
 TEST(RoundingMode, RestoredAfterEveryMethod) {
   ASSERT_EQ(std::fegetround(), FE_TONEAREST);
   for (const auto& q : testing::degenerate_queries<VertexFaceQuery>(14, 300))
-    for (Method m : {Method::filtered, Method::exact, Method::naive}) {
-      vertex_face_toi(q, m);
+    for (tools::Method m : {tools::Method::filtered, tools::Method::exact, tools::Method::naive}) {
+      tools::toi(q, m);
       ASSERT_EQ(std::fegetround(), FE_TONEAREST);
     }
 }

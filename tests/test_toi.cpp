@@ -18,6 +18,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
+#include "tools/methods.hpp"
 
 namespace exactccd {
 namespace {
@@ -382,6 +383,8 @@ TEST(Toi, NoCollisionMeansNoToi) {
 
 TEST(Toi, NonFiniteInputThrows) {
   const double bad[] = {std::numeric_limits<double>::quiet_NaN(), kInf, -kInf};
+  // Every method of the tools: the library's and the baselines (which throw alike).
+  using tools::Method;
   const Method methods[] = {Method::filtered,     Method::exact,        Method::naive,
                             Method::naive_tolerance, Method::naive_mpfr24, Method::naive_mpfr53,
                             Method::naive_mpfr113, Method::naive_mpfr256};
@@ -398,6 +401,12 @@ TEST(Toi, NonFiniteInputThrows) {
         const VertexFaceQuery vf = poison(falling_vertex(1, -1));
         const EdgeEdgeQuery ee = poison(crossing_edges(1, -1));
         for (Method m : methods) {
+          EXPECT_THROW(tools::ccd(vf, m), std::invalid_argument);
+          EXPECT_THROW(tools::toi(vf, m), std::invalid_argument);
+          EXPECT_THROW(tools::ccd(ee, m), std::invalid_argument);
+          EXPECT_THROW(tools::toi(ee, m), std::invalid_argument);
+        }
+        for (exactccd::Method m : {exactccd::Method::filtered, exactccd::Method::exact}) {
           EXPECT_THROW(vertex_face_ccd(vf, m), std::invalid_argument);
           EXPECT_THROW(vertex_face_toi(vf, m), std::invalid_argument);
           EXPECT_THROW(edge_edge_ccd(ee, m), std::invalid_argument);

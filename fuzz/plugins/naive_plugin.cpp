@@ -1,13 +1,13 @@
 // Example plug-in for `exactccd fuzz-against` (include/exactccd/plugin.h): exactccd's own
-// textbook double-precision method (Method::naive), which is NOT robust. docs/fuzzing.md shows
+// textbook double-precision method (tools::Method::naive), which is NOT robust. docs/fuzzing.md shows
 // what fuzz-against finds in it.
 #include "exactccd/plugin.h"
 #include "plugin_support.hpp"
 
 extern "C" EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_vf(const double q[24]) {
-  return exactccd::plugins::vertex_face_answer(q, exactccd::Method::naive);
+  return exactccd::plugins::vertex_face_answer(q, exactccd::tools::Method::naive);
 }
 
 extern "C" EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_ee(const double q[24]) {
-  return exactccd::plugins::edge_edge_answer(q, exactccd::Method::naive);
+  return exactccd::plugins::edge_edge_answer(q, exactccd::tools::Method::naive);
 }

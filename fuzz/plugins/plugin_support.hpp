@@ -1,11 +1,13 @@
 // Shared by the example plug-ins: a plug-in entry point (include/exactccd/plugin.h) that
-// answers with one of exactccd's own methods.
+// answers with one of the methods of exactccd's tools (tools::Method: the library's exact
+// methods or a non-robust baseline; built against the tools library, exactccd_tools).
 #pragma once
 
 #include <array>
 #include <exception>
 
 #include "exactccd/exactccd.hpp"
+#include "tools/methods.hpp"
 
 namespace exactccd::plugins {
 
@@ -18,18 +20,18 @@ Query query_from(const double q[24]) {
 }
 
 /// 1 or 0: method's answer on the vertex-face query q; -1 if it threw (non-finite input).
-inline int vertex_face_answer(const double q[24], Method method) noexcept {
+inline int vertex_face_answer(const double q[24], tools::Method method) noexcept {
   try {
-    return vertex_face_ccd(query_from<VertexFaceQuery>(q), method) ? 1 : 0;
+    return tools::ccd(query_from<VertexFaceQuery>(q), method) ? 1 : 0;
   } catch (const std::exception&) {
     return -1;
   }
 }
 
 /// 1 or 0: method's answer on the edge-edge query q; -1 if it threw (non-finite input).
-inline int edge_edge_answer(const double q[24], Method method) noexcept {
+inline int edge_edge_answer(const double q[24], tools::Method method) noexcept {
   try {
-    return edge_edge_ccd(query_from<EdgeEdgeQuery>(q), method) ? 1 : 0;
+    return tools::ccd(query_from<EdgeEdgeQuery>(q), method) ? 1 : 0;
   } catch (const std::exception&) {
     return -1;
   }

@@ -2,7 +2,7 @@
 // (Queries with rational coordinates: exactccd/rational.hpp, which needs GMP's headers.)
 //
 // The contract: for finite double or rational inputs every function answers as if computed
-// in exact real arithmetic (except with Method::naive, the non-robust textbook baseline).
+// in exact real arithmetic, by either method (Method::filtered, the default, or Method::exact).
 // - Vertex-face collides iff some t in [0,1] puts p(t) in the closed convex hull of
 //   a(t), b(t), c(t) (a degenerate triangle is a segment or a point).
 // - Edge-edge collides iff some t in [0,1] gives the closed segments a common point
@@ -23,7 +23,7 @@
 namespace exactccd {
 
 /// True iff the moving point p(t) lies in the closed moving triangle (a(t), b(t), c(t)) for
-/// some t in [0, 1], decided exactly (unless method is Method::naive).
+/// some t in [0, 1], decided exactly.
 /// Throws std::invalid_argument on a non-finite coordinate.
 bool vertex_face_ccd(const VertexFaceQuery& q, Method method = Method::filtered);
 
@@ -31,7 +31,7 @@ bool vertex_face_ccd(const VertexFaceQuery& q, Method method = Method::filtered)
 bool vertex_face_ccd(const VertexFaceQuery& q, Method method, StageCounters& counters);
 
 /// True iff the moving closed segments (a0(t), a1(t)) and (b0(t), b1(t)) share a point for
-/// some t in [0, 1], decided exactly (unless method is Method::naive).
+/// some t in [0, 1], decided exactly.
 /// Throws std::invalid_argument on a non-finite coordinate.
 bool edge_edge_ccd(const EdgeEdgeQuery& q, Method method = Method::filtered);
 
@@ -95,9 +95,8 @@ inline std::optional<TimeInterval> toi(const EdgeEdgeQuery& q, Method method, St
 // distance between the closed primitives (a degenerate triangle or a zero-length edge is its
 // hull); its TOI is the earliest such t, as the tightest double interval ([0, 0] when the
 // initial distance is <= d). CcdParams{} (d = 0, tmax = 1) gives exactly the answers and TOIs
-// of the functions above. Only Method::filtered and Method::exact answer these questions.
-// Throws std::invalid_argument on a non-finite coordinate, a negative or non-finite d, a tmax
-// outside (0, 1], or another method.
+// of the functions above. Throws std::invalid_argument on a non-finite coordinate, a negative
+// or non-finite d, a tmax outside (0, 1], or a value that is not a Method.
 // 2D kinds: the same questions in the plane (their answers equal those of the 3D kind with
 // every z = 0).
 // ---------------------------------------------------------------------------------------

@@ -185,21 +185,12 @@ inline bool operator==(const TimeInterval& a, const TimeInterval& b) {
   return a.lo == b.lo && a.hi == b.hi;
 }
 
-/// How a query is answered. `filtered` and `exact` return the exact answer; the others are
-/// baselines for comparison, NOT robust: wrong near degeneracies, and their "TOI" is an
-/// uncertified double [t, t].
+/// How a query is answered. Both methods return the exact answer; they differ in speed.
+/// (The non-robust textbook baselines the project compares against are not part of the
+/// library: they live in its tools, lib/baseline/ and tools::Method.)
 enum class Method {
-  filtered,         ///< certified floating-point filters, exact fallback (exact; the default)
-  exact,            ///< exact rational arithmetic and CGAL's algebraic kernel (slow reference)
-  naive,            ///< the textbook double-precision cubic
-  naive_tolerance,  ///< the textbook method with a Bridson-style tolerance (conservative)
-  naive_mpfr24,     ///< the textbook method in MPFR at 24 bits (the precision ladder)
-  naive_mpfr53,     ///< ... at 53 bits
-  naive_mpfr113,    ///< ... at 113 bits
-  naive_mpfr256,    ///< ... at 256 bits
+  filtered,  ///< certified floating-point filters, exact fallback (exact; the default)
+  exact,     ///< exact rational arithmetic and CGAL's algebraic kernel (slow reference)
 };
-
-/// True for the methods that always return the exact answer.
-constexpr bool is_exact_method(Method m) { return m == Method::filtered || m == Method::exact; }
 
 }  // namespace exactccd

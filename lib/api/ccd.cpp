@@ -6,7 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "baseline/naive_ccd.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/rational_query.hpp"
 #include "filter/filtered_ccd.hpp"
@@ -15,22 +14,6 @@
 
 namespace exactccd {
 namespace {
-
-std::optional<TimeInterval> point_interval(std::optional<double> t) {
-  if (!t) return std::nullopt;
-  return TimeInterval{*t, *t};
-}
-
-baseline::NaiveVariant naive_variant(Method m) {
-  switch (m) {
-    case Method::naive_tolerance: return baseline::NaiveVariant::tolerance;
-    case Method::naive_mpfr24: return baseline::NaiveVariant::mpfr24;
-    case Method::naive_mpfr53: return baseline::NaiveVariant::mpfr53;
-    case Method::naive_mpfr113: return baseline::NaiveVariant::mpfr113;
-    case Method::naive_mpfr256: return baseline::NaiveVariant::mpfr256;
-    default: return baseline::NaiveVariant::plain;
-  }
-}
 
 /// Throws std::invalid_argument, naming the public function (from the kind's description), on
 /// a non-finite coordinate; the name is built only then (no allocation on the hot path).
@@ -56,9 +39,9 @@ std::optional<TimeInterval> answer(const Query& q, Method method, bool want_toi,
       return filter::filtered(q, want_toi, counters);
     case Method::exact:
       return want_toi ? exact::toi(exact::to_rational(q)) : collides(exact::ccd(exact::to_rational(q)));
-    default:
-      return point_interval(baseline::naive_toi(q, naive_variant(method)));
   }
+  throw std::invalid_argument("exactccd::" + std::string(kinds::kind_of<Query>::function) +
+                              (want_toi ? "_toi" : "_ccd") + ": unknown method");
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ bool finite_point(const V& v) {
 }
 
 /// Throws std::invalid_argument naming the function on a non-finite coordinate, a d that is
-/// negative or not finite, a tmax outside (0, 1] or a method that is not exact.
+/// negative or not finite, a tmax outside (0, 1] or an unknown method value.
 template <class Query>
 void validate(const Query& q, const CcdParams& p, Method method, bool want_toi) {
   for (const auto& v : rows(q))
@@ -53,9 +53,9 @@ void validate(const Query& q, const CcdParams& p, Method method, bool want_toi) 
   if (!(p.tmax > 0 && p.tmax <= 1))
     throw std::invalid_argument(function_name<Query>(want_toi) + ": tmax must be in (0, 1], not " +
                                 std::to_string(p.tmax));
-  if (!is_exact_method(method))
-    throw std::invalid_argument(function_name<Query>(want_toi) +
-                                ": only Method::filtered and Method::exact answer a question with CcdParams");
+  if (method != Method::filtered && method != Method::exact)
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": unknown method " +
+                                std::to_string(static_cast<int>(method)));
 }
 
 Vec3 lift(const Vec2& v) { return {v.x, v.y, 0.0}; }

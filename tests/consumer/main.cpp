@@ -15,5 +15,8 @@ int main() {
   const double flat[24] = {2, 2, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 2, -1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
   int collides = -1;
   if (exactccd_vertex_face_ccd(flat, &collides) != EXACTCCD_OK || collides != 0) return 2;
+  // Both methods of the library are exact (the baselines are not in the installed package).
+  for (exactccd::Method m : {exactccd::Method::filtered, exactccd::Method::exact})
+    if (!exactccd::vertex_face_ccd(q, m)) return 3;
   return 0;
 }

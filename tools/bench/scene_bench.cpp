@@ -12,6 +12,7 @@
 #include "exactccd/exactccd.hpp"
 #include "scene/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
+#include "tools/methods.hpp"
 
 namespace {
 
@@ -52,14 +53,17 @@ void BM_BroadPhase(benchmark::State& state) {
   label(state, f);
 }
 
-/// The narrow phase over every candidate with one method (collision answers only).
-void BM_Narrow(benchmark::State& state, Method method) {
+/// The narrow phase over every candidate with one method (collision answers only). M:
+/// exactccd::Method (the public entry points) or tools::Method (the naive baseline, tools
+/// library); ccd() and toi() are the overloads of M's namespace.
+template <class M>
+void BM_Narrow(benchmark::State& state, M method) {
   const Fixture& f = fixture(static_cast<int>(state.range(0)));
   std::size_t hits = 0;
   for (auto _ : state) {
     hits = 0;
-    for (const auto& q : f.vf) hits += vertex_face_ccd(q, method);
-    for (const auto& q : f.ee) hits += edge_edge_ccd(q, method);
+    for (const auto& q : f.vf) hits += ccd(q, method);
+    for (const auto& q : f.ee) hits += ccd(q, method);
     benchmark::DoNotOptimize(hits);
   }
   label(state, f);
@@ -67,12 +71,13 @@ void BM_Narrow(benchmark::State& state, Method method) {
 }
 
 /// The narrow phase with times of impact, as find_collisions runs it.
-void BM_NarrowToi(benchmark::State& state, Method method) {
+template <class M>
+void BM_NarrowToi(benchmark::State& state, M method) {
   const Fixture& f = fixture(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     std::size_t hits = 0;
-    for (const auto& q : f.vf) hits += vertex_face_toi(q, method).has_value();
-    for (const auto& q : f.ee) hits += edge_edge_toi(q, method).has_value();
+    for (const auto& q : f.vf) hits += toi(q, method).has_value();
+    for (const auto& q : f.ee) hits += toi(q, method).has_value();
     benchmark::DoNotOptimize(hits);
   }
   label(state, f);
@@ -107,9 +112,9 @@ void BM_IntersectionFree(benchmark::State& state) {
 #define EXACTCCD_SCENE_SIZES ->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_BroadPhase) EXACTCCD_SCENE_SIZES;
 BENCHMARK_CAPTURE(BM_Narrow, filtered, Method::filtered) EXACTCCD_SCENE_SIZES;
-BENCHMARK_CAPTURE(BM_Narrow, naive, Method::naive) EXACTCCD_SCENE_SIZES;
+BENCHMARK_CAPTURE(BM_Narrow, naive, tools::Method::naive) EXACTCCD_SCENE_SIZES;
 BENCHMARK_CAPTURE(BM_NarrowToi, filtered, Method::filtered) EXACTCCD_SCENE_SIZES;
-BENCHMARK_CAPTURE(BM_NarrowToi, naive, Method::naive) EXACTCCD_SCENE_SIZES;
+BENCHMARK_CAPTURE(BM_NarrowToi, naive, tools::Method::naive) EXACTCCD_SCENE_SIZES;
 BENCHMARK(BM_FindCollisions) EXACTCCD_SCENE_SIZES;
 BENCHMARK(BM_FindCollisionsThreads)->Args({64, 1})->Args({64, 2})->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EarliestToi) EXACTCCD_SCENE_SIZES;

@@ -1,4 +1,4 @@
-// Micro-costs of each stage of the filtered method, and of the naive and exact methods, on
+// Micro-costs of each stage of the filtered method, and of the naive (tools) and exact methods, on
 // representative single queries (Google Benchmark). Whole-dataset figures: `exactccd bench`.
 //
 //   build/stage_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -15,6 +15,7 @@
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/volume_exclusion.hpp"
+#include "tools/methods.hpp"
 
 namespace {
 
@@ -60,11 +61,14 @@ void BM_IntegerStage(benchmark::State& state) {
 }
 BENCHMARK(BM_IntegerStage);
 
-void BM_Method(benchmark::State& state, const VertexFaceQuery& query, Method m) {
+// M: exactccd::Method (the public entry point) or exactccd::tools::Method (the baselines,
+// which the installed library does not hold); ccd() is the overload of M's namespace.
+template <class M>
+void BM_Method(benchmark::State& state, const VertexFaceQuery& query, M m) {
   VertexFaceQuery q = query;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::vertex_face_ccd(q, m));
+    benchmark::DoNotOptimize(ccd(q, m));
   }
 }
 // The filter stages without the public entry point (no finiteness check, no floating-point
@@ -114,10 +118,10 @@ BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_miss_ftz_daz, kMiss, Method::
 BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_hit_ftz_daz, kHit, Method::filtered, FE_TONEAREST, true);
 BENCHMARK_CAPTURE(BM_MethodInEnvironment, filtered_hit_upward, kHit, Method::filtered, FE_UPWARD, false);
 
-BENCHMARK_CAPTURE(BM_Method, naive_miss, kMiss, Method::naive);
+BENCHMARK_CAPTURE(BM_Method, naive_miss, kMiss, exactccd::tools::Method::naive);
 BENCHMARK_CAPTURE(BM_Method, filtered_miss, kMiss, Method::filtered);
 BENCHMARK_CAPTURE(BM_Method, exact_miss, kMiss, Method::exact);
-BENCHMARK_CAPTURE(BM_Method, naive_hit, kHit, Method::naive);
+BENCHMARK_CAPTURE(BM_Method, naive_hit, kHit, exactccd::tools::Method::naive);
 BENCHMARK_CAPTURE(BM_Method, filtered_hit, kHit, Method::filtered);
 BENCHMARK_CAPTURE(BM_Method, exact_hit, kHit, Method::exact);
 BENCHMARK_CAPTURE(BM_Method, filtered_through_vertex, kThroughVertex, Method::filtered);

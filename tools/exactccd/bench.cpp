@@ -124,7 +124,7 @@ int run_bench(int argc, char** argv) {
   }
   const std::optional<QueryKind> kind = kind_of(options);
   const int repetitions = static_cast<int>(options.integer("--repetitions"));
-  std::vector<Method> methods;
+  std::vector<tools::Method> methods;
   for (const std::string& m : options.list("--methods")) methods.push_back(parse_method(m));
   const std::string json = options.has("--json") ? options.text("--json") : "";
   std::vector<std::string> files = options.positionals();
@@ -138,7 +138,7 @@ int run_bench(int argc, char** argv) {
   for (const std::string& f : files) {
     datasets.push_back(load_dataset(f, kind));
     datasets.back().name = dataset_name(f);
-    for (Method m : methods) require_double_range(datasets.back(), m);
+    for (tools::Method m : methods) require_double_range(datasets.back(), m);
   }
 
   FILE* table = json == "-" ? stderr : stdout;
@@ -155,7 +155,7 @@ int run_bench(int argc, char** argv) {
     const std::vector<bool>& reference = d.queries.truth;
     std::size_t truth_disagrees_with_exact = 0;
     for (std::size_t i = 0; i < n; ++i)
-      truth_disagrees_with_exact += run_query(d, i, Method::exact, nullptr, false).has_value() != reference[i];
+      truth_disagrees_with_exact += run_query(d, i, tools::Method::exact, nullptr, false).has_value() != reference[i];
     if (truth_disagrees_with_exact > 0)
       std::fprintf(stderr, "exactccd bench: %s: the truth column disagrees with Method::exact on %zu of %zu "
                            "queries: its FP and FN are against that column\n",
@@ -183,7 +183,7 @@ int run_bench(int argc, char** argv) {
             r.fn += !answer[i] && reference[i];
           }
           r.stages = counters;
-          r.exact_fallbacks = methods[m] == Method::exact ? n : methods[m] == Method::filtered ? counters.exact : 0;
+          r.exact_fallbacks = methods[m] == tools::Method::exact ? n : methods[m] == tools::Method::filtered ? counters.exact : 0;
         }
       }
     }
@@ -194,7 +194,7 @@ int run_bench(int argc, char** argv) {
       r.mean_ns = sum / per_query_ns[m].size();
       r.median_ns = median(per_query_ns[m]);
       std::string stages = "-";
-      if (methods[m] == Method::filtered && n) {
+      if (methods[m] == tools::Method::filtered && n) {
         char buf[128];
         std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.1f%% / %.2f%% / %.3f%%",
                       100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.static_predicates / n,

@@ -57,7 +57,7 @@ int run_check(int argc, char** argv) {
     return kExitOk;
   }
   const std::optional<QueryKind> kind = kind_of(options);
-  const Method method = parse_method(options.text("--method"));
+  const tools::Method method = parse_method(options.text("--method"));
   const bool answers = options.flag("--answers"), stats = options.flag("--stats"), json = options.flag("--json");
   const BatchOptions batch = batch_options(options);
   const std::vector<std::string>& files = options.positionals();
@@ -126,7 +126,7 @@ int run_check(int argc, char** argv) {
     } else {
       std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", d.name.c_str(), kind_name(d.kind).c_str(),
                   t.queries, t.positives, t.fp, t.fn, t.queries ? 1e6 * seconds / t.queries : 0.0);
-      if (stats && method == Method::filtered)
+      if (stats && method == tools::Method::filtered)
         std::printf("  stages: volume_exclusion %llu, static_predicates %llu, interval %llu, integer %llu, exact %llu\n",
                     static_cast<unsigned long long>(stages.volume_exclusion),
                     static_cast<unsigned long long>(stages.static_predicates),

@@ -75,14 +75,16 @@ std::optional<QueryKind> kind_from_path(const std::string& path) {
   return best;
 }
 
-const std::vector<Method>& all_methods() {
+const std::vector<tools::Method>& all_methods() {
+  using tools::Method;
   static const std::vector<Method> methods = {
       Method::naive,        Method::naive_tolerance, Method::naive_mpfr24,  Method::naive_mpfr53,
       Method::naive_mpfr113, Method::naive_mpfr256,  Method::filtered,      Method::exact};
   return methods;
 }
 
-std::string method_name(Method m) {
+std::string method_name(tools::Method m) {
+  using tools::Method;
   switch (m) {
     case Method::filtered: return "filtered";
     case Method::exact: return "exact";
@@ -98,12 +100,12 @@ std::string method_name(Method m) {
 
 std::vector<std::string> all_method_names() {
   std::vector<std::string> names;
-  for (Method m : all_methods()) names.push_back(method_name(m));
+  for (tools::Method m : all_methods()) names.push_back(method_name(m));
   return names;
 }
 
-Method parse_method(const std::string& s) {
-  for (Method m : all_methods())
+tools::Method parse_method(const std::string& s) {
+  for (tools::Method m : all_methods())
     if (method_name(m) == s) return m;
   throw UsageError("unknown method '" + s +
                    "' (expected filtered, exact, naive, naive-tolerance, mpfr24, mpfr53, mpfr113 or mpfr256)");
@@ -130,8 +132,8 @@ Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
   return d;
 }
 
-void require_double_range(const Dataset& d, Method method) {
-  if (is_exact_method(method)) return;
+void require_double_range(const Dataset& d, tools::Method method) {
+  if (tools::is_exact_method(method)) return;
   for (std::size_t i = 0; i < d.queries.size(); ++i) {
     if (d.doubles[i]) continue;  // exact doubles: finite
     for (std::size_t row = 0; row < 8; ++row) {
@@ -156,12 +158,12 @@ std::optional<TimeInterval> collides_placeholder(bool collides) {
 
 }  // namespace
 
-std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method method,
+std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Method method,
                                       StageCounters* counters, bool want_toi) {
   return visit_kind(d.kind, [&](auto kind) {
     using Kind = decltype(kind);
     const auto& exact_rows = d.doubles[i];
-    if (!exact_rows && is_exact_method(method)) {  // not doubles: the rational exact path
+    if (!exact_rows && tools::is_exact_method(method)) {  // not doubles: the rational exact path
       if (counters) ++counters->exact;
       const auto q = from_rows<typename Kind::template Query<mpq_class>>(d.queries.rows[i]);
       return want_toi ? toi(q) : collides_placeholder(ccd(q));
@@ -170,7 +172,7 @@ std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method me
     StageCounters unused;
     StageCounters& c = counters ? *counters : unused;
     const auto q = from_rows<typename Kind::template Query<double>>(rows);
-    return want_toi ? toi(q, method, c) : collides_placeholder(ccd(q, method, c));
+    return want_toi ? tools::toi(q, method, c) : collides_placeholder(tools::ccd(q, method, c));
   });
 }
 

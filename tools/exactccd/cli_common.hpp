@@ -16,6 +16,7 @@
 #include "kinds/primitive_kinds.hpp"
 #include "options.hpp"
 #include "scene/parallel.hpp"
+#include "tools/methods.hpp"
 
 namespace exactccd::cli {
 
@@ -87,11 +88,12 @@ std::optional<QueryKind> kind_of(const ParsedOptions& options);
 /// several occur, the one nearest the end of the path (the file name over its folders).
 std::optional<QueryKind> kind_from_path(const std::string& path);
 
-/// Every method, baselines first: naive, naive-tolerance, mpfr24, mpfr53, mpfr113, mpfr256,
-/// filtered, exact (their names on the command line).
-const std::vector<Method>& all_methods();
-Method parse_method(const std::string& s);
-std::string method_name(Method m);
+/// Every method (tools::Method: the library's exact methods and the baselines), baselines
+/// first: naive, naive-tolerance, mpfr24, mpfr53, mpfr113, mpfr256, filtered, exact (their
+/// names on the command line).
+const std::vector<tools::Method>& all_methods();
+tools::Method parse_method(const std::string& s);
+std::string method_name(tools::Method m);
 /// The names of all_methods(), in that order.
 std::vector<std::string> all_method_names();
 
@@ -114,11 +116,11 @@ Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind);
 /// Throws io::ParseError naming the file and the row's line when `method` works in doubles (a
 /// baseline) and a coordinate of d rounds beyond the largest double (the baseline cannot take
 /// the query; the exact methods can). No-op for the exact methods.
-void require_double_range(const Dataset& d, Method method);
+void require_double_range(const Dataset& d, tools::Method method);
 
 /// The answer of one method on query i: the TOI when it collides. Rational queries that are
 /// not exact doubles run the exact path (the baselines round them to the nearest doubles).
-std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, Method method,
+std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Method method,
                                       StageCounters* counters, bool want_toi);
 
 /// Seconds since an arbitrary epoch (steady clock).

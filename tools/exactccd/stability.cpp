@@ -61,8 +61,8 @@ std::vector<std::string> split(const std::string& list) {
   return out;
 }
 
-bool answer(const families::AnyQuery& q, Method m) {
-  return std::visit([m](const auto& x) { return ccd(x, m); }, q);
+bool answer(const families::AnyQuery& q, tools::Method m) {
+  return std::visit([m](const auto& x) { return tools::ccd(x, m); }, q);
 }
 
 struct Cell {  // one (family, k): counts per method
@@ -100,7 +100,7 @@ int run_stability(int argc, char** argv) {
       fams.push_back(f);
     }
   }
-  std::vector<Method> methods;
+  std::vector<tools::Method> methods;
   for (const std::string& n : options.list("--methods")) methods.push_back(parse_method(n));
 
   // Tasks: (family, k) pairs, k = -1 for the unperturbed configuration.
@@ -120,11 +120,11 @@ int run_stability(int argc, char** argv) {
       std::seed_seq s{seed, static_cast<std::uint64_t>(t), static_cast<std::uint64_t>(i)};
       std::mt19937_64 rng(s);
       const families::Instance inst = family->make(k, i % 2 == 0, rng);
-      const bool reference = answer(inst.query, Method::exact);  // the CGAL reference
+      const bool reference = answer(inst.query, tools::Method::exact);  // the CGAL reference
       const bool truth = inst.expected.value_or(reference);       // the construction's, if known
       ++cell.queries;
       for (std::size_t m = 0; m < methods.size(); ++m) {
-        const bool got = methods[m] == Method::exact ? reference : answer(inst.query, methods[m]);
+        const bool got = methods[m] == tools::Method::exact ? reference : answer(inst.query, methods[m]);
         cell.fp[m] += got && !truth;
         cell.fn[m] += !got && truth;
       }
