@@ -1045,7 +1045,7 @@ TEST(MinSeparationApi, RejectsInvalidParamsAndMethods) {
     EXPECT_THROW(toi(q, p), std::invalid_argument) << p.min_distance << " " << p.tmax;
     EXPECT_THROW(ccd(q, p), std::invalid_argument) << p.min_distance << " " << p.tmax;
   }
-  EXPECT_THROW(toi(q, CcdParams{}, Method::naive), std::invalid_argument);
+  EXPECT_THROW(toi(q, CcdParams{}, static_cast<Method>(7)), std::invalid_argument);  // no such method
   EXPECT_THROW(point_point_toi(PointPointQuery{{0, 0, 0}, {1, 0, 0}, {0, 0, nan}, {1, 0, 0}}), std::invalid_argument);
   // the smallest tmax and a huge d are valid
   EXPECT_EQ(toi(q, CcdParams{0, std::numeric_limits<double>::denorm_min()}), std::nullopt);
