@@ -109,8 +109,15 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method me
   validate(q, p, method, want_toi);
   const bool whole_step = p.tmax == 1.0;
   constexpr bool touch_kind = std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>;
-  if (p.min_distance == 0 && method == Method::filtered)
+  if (p.min_distance == 0 && method == Method::filtered) {
+    if constexpr (!touch_kind) {  // no volume filter for these: the separating direction first
+      if (separation::separated_beyond(q, 0.0)) {
+        if (counters) ++counters->separating_direction;
+        return std::nullopt;
+      }
+    }
     return cut(touch_filtered(q, want_toi || !whole_step, counters), p.tmax);
+  }
   if constexpr (touch_kind) {
     if (p.min_distance == 0) {  // Method::exact
       if (!want_toi && whole_step)

@@ -82,19 +82,25 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
 /// std::invalid_argument when queries.truth and queries.rows differ in size.
 void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries);
 
-/// Query i of `queries` as a rational query of the kind of `Query` (e.g.
-/// RationalPointEdgeQuery), whose layout must be the file's.
-template <class Query>
-Query query_at(const BenchmarkQueries& queries, std::size_t i) {
-  const auto& r = queries.rows.at(i);
+/// A query of any kind (double or rational coordinates) from the first rows of a benchmark
+/// file's eight-row array (2D kinds take x and y).
+template <class Query, class Point>
+Query query_from_rows(const std::array<Point, 8>& r) {
   auto out = rows(Query{});
   static_assert(out.size() <= 8);
   for (std::size_t k = 0; k < out.size(); ++k) {
     out[k].x = r[k].x;
     out[k].y = r[k].y;
-    if constexpr (std::is_same_v<std::decay_t<decltype(out[k])>, RationalVec3>) out[k].z = r[k].z;
+    if constexpr (std::is_same_v<std::decay_t<decltype(out[k])>, std::decay_t<Point>>) out[k].z = r[k].z;
   }
   return from_rows<Query>(out);
+}
+
+/// Query i of `queries` as a rational query of the kind of `Query` (e.g.
+/// RationalPointEdgeQuery), whose layout must be the file's.
+template <class Query>
+Query query_at(const BenchmarkQueries& queries, std::size_t i) {
+  return query_from_rows<Query>(queries.rows.at(i));
 }
 
 /// Query i of `queries` as a rational vertex-face query (rows in benchmark order).

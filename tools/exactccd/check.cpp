@@ -18,7 +18,12 @@ const CommandSpec& command() {
     c.usage = "usage: exactccd check [options] FILE.csv...";
     c.description =
         "Answers every query of benchmark CSV files (Wang et al. 2021 format: 8 rows per query,\n"
-        "x_num,x_den,y_num,y_den,z_num,z_den,truth) and compares with the truth column.\n";
+        "x_num,x_den,y_num,y_den,z_num,z_den,truth) and compares with the truth column. Other kinds:\n"
+        "point-edge 6 rows (p_t0, a_t0, b_t0, p_t1, a_t1, b_t1), point-point 4 rows (p_t0, q_t0, p_t1,\n"
+        "q_t1); the 2D kinds have the rows of their 3D counterpart with 5 columns each\n"
+        "(x_num,x_den,y_num,y_den,truth). With --min-distance D and --tmax T a query collides iff the\n"
+        "primitives come within distance D at some t in [0, T] (exactly; the truth column must be\n"
+        "that question's).\n";
     c.options = {
         kind_option("query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)"),
         choice_option("--method", "NAME", all_method_names(), "filtered",
@@ -26,10 +31,13 @@ const CommandSpec& command() {
                       "naive (textbook doubles), naive-tolerance (Bridson-style tolerance),\n"
                       "mpfr24, mpfr53, mpfr113, mpfr256 (textbook in MPFR)"),
         flag_option("--answers", "print only one line per query, 0 or 1, in file order"),
+        flag_option("--toi", "compute times of impact; with --answers each line is 0, or 1 LO HI: the\n"
+                             "tightest doubles around the earliest time (17 significant digits)"),
         flag_option("--stats", "also print how many queries each stage of the filtered method decided"),
         flag_option("--json", "print a JSON array instead of the table: one object per file with keys\n"
                               "file, kind, method, queries, positives, fp, fn, us_per_query, stages"),
     };
+    for (OptionSpec& o : separation_option_specs()) c.options.push_back(o);
     for (OptionSpec& o : batch_option_specs()) c.options.push_back(o);
     c.epilogue =
         "\noutput: per file, queries, truth positives, false positives, false negatives and the mean time\n"
@@ -59,6 +67,8 @@ int run_check(int argc, char** argv) {
   const std::optional<QueryKind> kind = kind_of(options);
   const tools::Method method = parse_method(options.text("--method"));
   const bool answers = options.flag("--answers"), stats = options.flag("--stats"), json = options.flag("--json");
+  const bool want_toi = options.flag("--toi");
+  const CcdParams params = separation_params(options);
   const BatchOptions batch = batch_options(options);
   const std::vector<std::string>& files = options.positionals();
   if (files.empty()) throw UsageError("check: no input file (see exactccd check --help)");
@@ -68,6 +78,7 @@ int run_check(int argc, char** argv) {
   std::vector<Dataset> datasets;
   for (const std::string& f : files) {
     datasets.push_back(load_dataset(f, kind));
+    require_method_answers(method, datasets.back().kind, params);
     require_double_range(datasets.back(), method);
   }
 
@@ -89,10 +100,10 @@ int run_check(int argc, char** argv) {
     offset += n;
     if (begin == end) continue;
     std::vector<StageCounters> counters(end - begin);  // one per query: no shared counter
-    std::vector<char> result(end - begin);
+    std::vector<std::optional<TimeInterval>> result(end - begin);
     const double start = now_seconds();
     parallel_for(begin, end, batch.threads, [&](std::size_t i) {
-      result[i - begin] = run_query(d, i, method, &counters[i - begin], false).has_value();
+      result[i - begin] = run_query(d, i, method, &counters[i - begin], want_toi, params);
     }, "check");
     const double seconds = now_seconds() - start;
     StageCounters stages;
@@ -101,24 +112,32 @@ int run_check(int argc, char** argv) {
     t.queries = end - begin;
     t.seconds = seconds;
     for (std::size_t i = begin; i < end; ++i) {
-      const bool r = result[i - begin];
+      const bool r = result[i - begin].has_value();
       t.positives += d.queries.truth[i];
       t.fp += r && !d.queries.truth[i];
       t.fn += !r && d.queries.truth[i];
     }
     if (answers) {
-      for (char r : result) std::fputs(r ? "1\n" : "0\n", stdout);
+      for (const auto& r : result) {
+        if (!r)
+          std::fputs("0\n", stdout);
+        else if (want_toi)
+          std::printf("1 %.17g %.17g\n", r->lo, r->hi);  // 17 digits: read back as the same doubles
+        else
+          std::fputs("1\n", stdout);
+      }
     } else if (json) {
       char buf[4096];
       std::snprintf(buf, sizeof buf,
                     "%s  {\"file\": %s, \"kind\": \"%s\", \"method\": \"%s\", \"queries\": %zu, "
                     "\"positives\": %zu, \"fp\": %zu, \"fn\": %zu, \"us_per_query\": %.3f, \"stages\": "
-                    "{\"volume_exclusion\": %llu, \"static_predicates\": %llu, \"interval\": %llu, \"integer\": %llu, \"exact\": %llu}}",
+                    "{\"volume_exclusion\": %llu, \"static_predicates\": %llu, \"separating_direction\": %llu, \"interval\": %llu, \"integer\": %llu, \"exact\": %llu}}",
                     json_items.empty() ? "" : ",\n", json_string(d.name).c_str(), kind_name(d.kind).c_str(),
                     method_name(method).c_str(), t.queries, t.positives, t.fp, t.fn,
                     t.queries ? 1e6 * seconds / t.queries : 0.0,
                     static_cast<unsigned long long>(stages.volume_exclusion),
                     static_cast<unsigned long long>(stages.static_predicates),
+                    static_cast<unsigned long long>(stages.separating_direction),
                     static_cast<unsigned long long>(stages.interval),
                     static_cast<unsigned long long>(stages.integer),
                     static_cast<unsigned long long>(stages.exact));
@@ -127,9 +146,10 @@ int run_check(int argc, char** argv) {
       std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", d.name.c_str(), kind_name(d.kind).c_str(),
                   t.queries, t.positives, t.fp, t.fn, t.queries ? 1e6 * seconds / t.queries : 0.0);
       if (stats && method == tools::Method::filtered)
-        std::printf("  stages: volume_exclusion %llu, static_predicates %llu, interval %llu, integer %llu, exact %llu\n",
+        std::printf("  stages: volume_exclusion %llu, static_predicates %llu, separating_direction %llu, interval %llu, integer %llu, exact %llu\n",
                     static_cast<unsigned long long>(stages.volume_exclusion),
                     static_cast<unsigned long long>(stages.static_predicates),
+                    static_cast<unsigned long long>(stages.separating_direction),
                     static_cast<unsigned long long>(stages.interval),
                     static_cast<unsigned long long>(stages.integer),
                     static_cast<unsigned long long>(stages.exact));

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <exception>
 #include <mutex>
 #include <system_error>
@@ -20,8 +21,12 @@ namespace exactccd::cli {
 std::vector<QueryKind> all_kinds() {
   std::vector<QueryKind> out;
   std::size_t i = 0;
-  kinds::for_each_kind([&](auto) { out.push_back(QueryKind{i++}); });
+  kinds::for_each_separation_kind([&](auto) { out.push_back(QueryKind{i++}); });
   return out;
+}
+
+bool is_contact_kind_at(QueryKind k) {
+  return visit_kind(k, [](auto kind) { return is_contact_kind<decltype(kind)>; });
 }
 
 std::string kind_name(QueryKind k) {
@@ -66,8 +71,10 @@ std::optional<QueryKind> kind_from_path(const std::string& path) {
   std::optional<QueryKind> best;
   std::size_t best_at = 0;
   for (QueryKind k : all_kinds()) {
+    // The same start: the longer name ("edge-edge-2d" over "edge-edge").
     const std::size_t at = path.rfind(kind_long_name(k));
-    if (at != std::string::npos && (!best || at > best_at)) {
+    if (at != std::string::npos &&
+        (!best || at > best_at || (at == best_at && kind_long_name(k).size() > kind_long_name(*best).size()))) {
       best = k;
       best_at = at;
     }
@@ -124,7 +131,8 @@ Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
   d.path = path;
   d.name = path;
   d.kind = *kind;
-  d.queries = io::read_benchmark_csv(file.stream(), path);
+  d.queries = io::read_benchmark_csv(file.stream(), path,
+                                     visit_kind(*kind, [](auto k) { return io::layout_of<decltype(k)>(); }));
   file.check_read();
   if (d.queries.size() == 0) throw io::InputError(path, "no queries (an empty benchmark file)");
   d.doubles.reserve(d.queries.size());
@@ -159,21 +167,55 @@ std::optional<TimeInterval> collides_placeholder(bool collides) {
 }  // namespace
 
 std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Method method,
-                                      StageCounters* counters, bool want_toi) {
-  return visit_kind(d.kind, [&](auto kind) {
+                                      StageCounters* counters, bool want_toi, const CcdParams& params) {
+  return visit_kind(d.kind, [&](auto kind) -> std::optional<TimeInterval> {
     using Kind = decltype(kind);
+    using RationalQuery = typename Kind::template Query<mpq_class>;
+    using DoubleQuery = typename Kind::template Query<double>;
+    const bool contact_question = params.min_distance == 0 && params.tmax == 1;
     const auto& exact_rows = d.doubles[i];
     if (!exact_rows && tools::is_exact_method(method)) {  // not doubles: the rational exact path
       if (counters) ++counters->exact;
-      const auto q = from_rows<typename Kind::template Query<mpq_class>>(d.queries.rows[i]);
-      return want_toi ? toi(q) : collides_placeholder(ccd(q));
+      const auto q = io::query_at<RationalQuery>(d.queries, i);
+      if constexpr (is_contact_kind<Kind>)
+        if (contact_question) return want_toi ? toi(q) : collides_placeholder(ccd(q));
+      return toi(q, RationalCcdParams{mpq_class(params.min_distance), mpq_class(params.tmax)});
     }
     const std::array<Vec3, 8> rows = exact_rows ? *exact_rows : io::nearest_double_rows(d.queries.rows[i]);
     StageCounters unused;
     StageCounters& c = counters ? *counters : unused;
-    const auto q = from_rows<typename Kind::template Query<double>>(rows);
-    return want_toi ? tools::toi(q, method, c) : collides_placeholder(tools::ccd(q, method, c));
+    if constexpr (is_contact_kind<Kind>) {
+      if (contact_question) {
+        const auto q = io::query_from_rows<DoubleQuery>(rows);
+        return want_toi ? tools::toi(q, method, c) : collides_placeholder(tools::ccd(q, method, c));
+      }
+    }
+    if (!tools::is_exact_method(method)) throw std::logic_error("run_query: a baseline for " + kind_name(d.kind));
+    const auto q = io::query_from_rows<DoubleQuery>(rows);
+    const Method m = method == tools::Method::exact ? Method::exact : Method::filtered;
+    return want_toi ? toi(q, params, m, c) : collides_placeholder(ccd(q, params, m, c));
   });
+}
+
+void require_method_answers(tools::Method method, QueryKind kind, const CcdParams& params) {
+  if (tools::is_exact_method(method)) return;
+  if (!is_contact_kind_at(kind))
+    throw UsageError("the baseline method " + method_name(method) + " answers only vf and ee queries, not " +
+                     kind_name(kind) + " (use filtered or exact)");
+  if (params.min_distance != 0 || params.tmax != 1)
+    throw UsageError("the baseline method " + method_name(method) +
+                     " answers only the contact question (no --min-distance, --tmax 1)");
+}
+
+std::vector<OptionSpec> separation_option_specs() {
+  constexpr double kSmallest = std::numeric_limits<double>::denorm_min();
+  return {real_option("--min-distance", "D", 0.0, std::numeric_limits<double>::max(), "0",
+                      "a collision is a distance <= D between the primitives (the nearest double to D)"),
+          real_option("--tmax", "T", kSmallest, 1.0, "1", "only times t in [0, T] count (the nearest double to T)")};
+}
+
+CcdParams separation_params(const ParsedOptions& options) {
+  return CcdParams{options.real("--min-distance"), options.real("--tmax")};
 }
 
 OptionSpec threads_option(const std::string& default_value, const std::string& help) {

@@ -32,8 +32,9 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A primitive kind at run time: the position of its description in kinds::for_each_kind
-/// (lib/kinds/primitive_kinds.hpp), from which every name below is derived.
+/// A primitive kind at run time: the position of its description in
+/// kinds::for_each_separation_kind (lib/kinds/primitive_kinds.hpp: vf, ee, pe, pp, ee2, pe2,
+/// pp2), from which every name below is derived.
 struct QueryKind {
   std::size_t index = 0;
   friend bool operator==(QueryKind a, QueryKind b) { return a.index == b.index; }
@@ -44,7 +45,7 @@ struct QueryKind {
 template <class Kind>
 QueryKind query_kind() {
   std::size_t i = 0, found = 0;
-  kinds::for_each_kind([&](auto k) {
+  kinds::for_each_separation_kind([&](auto k) {
     if (std::is_same_v<decltype(k), Kind>) found = i;
     ++i;
   });
@@ -57,13 +58,13 @@ auto visit_kind(QueryKind kind, F&& f) {
   using R = decltype(f(kinds::VertexFace{}));
   if constexpr (std::is_void_v<R>) {
     std::size_t i = 0;
-    kinds::for_each_kind([&](auto k) {
+    kinds::for_each_separation_kind([&](auto k) {
       if (i++ == kind.index) f(k);
     });
   } else {
     std::optional<R> out;
     std::size_t i = 0;
-    kinds::for_each_kind([&](auto k) {
+    kinds::for_each_separation_kind([&](auto k) {
       if (i++ == kind.index) out.emplace(f(k));
     });
     if (!out) throw std::logic_error("visit_kind: no kind at index " + std::to_string(kind.index));
@@ -71,7 +72,14 @@ auto visit_kind(QueryKind kind, F&& f) {
   }
 }
 
-/// Every kind, in for_each_kind order.
+/// True for the kinds of the contact question of the benchmark (vertex-face, edge-edge): those
+/// with a volume, the baselines, families and plug-ins.
+template <class Kind>
+constexpr bool is_contact_kind = std::is_same_v<Kind, kinds::VertexFace> || std::is_same_v<Kind, kinds::EdgeEdge>;
+/// True when the run-time kind is vertex-face or edge-edge (is_contact_kind).
+bool is_contact_kind_at(QueryKind k);
+
+/// Every kind, in for_each_separation_kind order.
 std::vector<QueryKind> all_kinds();
 /// A kind's --kind value ("vf", "ee", ...).
 std::string kind_name(QueryKind k);
@@ -120,8 +128,20 @@ void require_double_range(const Dataset& d, tools::Method method);
 
 /// The answer of one method on query i: the TOI when it collides. Rational queries that are
 /// not exact doubles run the exact path (the baselines round them to the nearest doubles).
+/// `params`: the minimum separation and time limit (only the exact methods answer other
+/// questions than the default one, and the only ones for kinds other than vf and ee: see
+/// require_method_answers).
 std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Method method,
-                                      StageCounters* counters, bool want_toi);
+                                      StageCounters* counters, bool want_toi, const CcdParams& params = {});
+
+/// Throws UsageError when `method` (a baseline) cannot answer the kind or the question: the
+/// baselines answer only vertex-face and edge-edge with the default CcdParams.
+void require_method_answers(tools::Method method, QueryKind kind, const CcdParams& params);
+
+/// The `--min-distance D` and `--tmax T` options (D >= 0 and T in (0, 1], nearest doubles).
+std::vector<OptionSpec> separation_option_specs();
+/// The CcdParams given by --min-distance and --tmax.
+CcdParams separation_params(const ParsedOptions& options);
 
 /// Seconds since an arbitrary epoch (steady clock).
 inline double now_seconds() {

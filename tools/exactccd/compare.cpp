@@ -15,18 +15,21 @@ const CommandSpec& command() {
   static const CommandSpec spec = [] {
     CommandSpec c;
     c.name = "compare";
-    c.usage = "usage: exactccd compare [--kind vf|ee] --answers THEIRS.txt FILE.csv";
+    c.usage = "usage: exactccd compare [--kind KIND] [--min-distance D] [--tmax T] --answers THEIRS.txt FILE.csv";
     c.description =
         "Compares another code's answers with the exact ones. THEIRS.txt holds one answer per query of\n"
         "FILE.csv (benchmark CSV format), 0 or 1, one per line, in file order. Prints the number of\n"
         "queries, false positives and false negatives (against the exact answer, not the file's truth\n"
         "column), then one line per disagreement: query index (0-based), FP or FN, and the query's\n"
         "degeneracy categories (coplanar_for_all_t, root_at_t0, root_at_t1, multiple_root,\n"
-        "degenerate_triangle, parallel_edges, zero_length_edge, static, or generic), decided exactly.\n";
+        "degenerate_triangle, parallel_edges, zero_length_edge, static, or generic; vf and ee), decided\n"
+        "exactly. With --min-distance and --tmax the exact answer is that of the question \"distance <= D\n"
+        "at some t in [0, T]\".\n";
     c.options = {
         kind_option("query kind (default: inferred from the path of FILE.csv)"),
         required(text_option("--answers", "FILE", "", "the other code's answers")),
     };
+    for (OptionSpec& o : separation_option_specs()) c.options.push_back(o);
     c.epilogue = "exit codes: 0 ran (whatever it found), 2 bad usage or malformed input, 1 internal error.\n";
     return c;
   }();
@@ -63,6 +66,8 @@ int run_compare(int argc, char** argv) {
   if (options.positionals().empty()) throw UsageError("compare: needs --answers THEIRS.txt and FILE.csv");
   const std::string file = options.positionals()[0];
   const Dataset d = load_dataset(file, kind);
+  const CcdParams params = separation_params(options);
+  const RationalCcdParams exact_params{mpq_class(params.min_distance), mpq_class(params.tmax)};
   const std::vector<bool> theirs = read_answers(answers_path);
   if (theirs.size() != d.queries.size())
     throw UsageError("compare: " + answers_path + " has " + std::to_string(theirs.size()) + " answers but " +
@@ -70,11 +75,14 @@ int run_compare(int argc, char** argv) {
   std::size_t fp = 0, fn = 0;
   std::vector<std::string> lines;
   for (std::size_t i = 0; i < d.queries.size(); ++i) {
-    const auto& r = d.queries.rows[i];
     const auto [exact, labels] = visit_kind(d.kind, [&](auto kind) {
-      const auto q = from_rows<typename decltype(kind)::template Query<mpq_class>>(r);
-      const bool collides = ccd(q);
-      return std::pair(collides, theirs[i] == collides ? std::vector<std::string>{} : exact::degeneracy_categories(q));
+      using Kind = decltype(kind);
+      const auto q = io::query_at<typename Kind::template Query<mpq_class>>(d.queries, i);
+      const bool collides = ccd(q, exact_params);
+      std::vector<std::string> categories;
+      if constexpr (is_contact_kind<Kind>)
+        if (theirs[i] != collides) categories = exact::degeneracy_categories(q);
+      return std::pair(collides, categories);
     });
     if (theirs[i] == exact) continue;
     (theirs[i] ? fp : fn)++;

@@ -68,7 +68,13 @@ bits) while the same disagreement persists.
 class Plugin {
  public:
   Plugin(const std::string& path, QueryKind kind)
-      : symbol_(visit_kind(kind, [](auto k) { return decltype(k)::plugin_symbol.data(); })) {
+      : symbol_(visit_kind(kind, [](auto k) -> const char* {
+          if constexpr (is_contact_kind<decltype(k)>)
+            return decltype(k)::plugin_symbol.data();
+          else
+            throw UsageError("fuzz-against: the plug-in ABI (exactccd/plugin.h) has vf and ee queries, not " +
+                             std::string(decltype(k)::short_name));
+        })) {
     // dlopen searches the library path for a bare name: "x.so" means the file ./x.so here.
     const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
     handle_ = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
