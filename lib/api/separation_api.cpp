@@ -132,7 +132,7 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method me
     }
     const separation::IntervalVerdict verdict = separation::interval_separation(q, p.min_distance, p.tmax);
     if (verdict.decided) {
-      if (counters) ++counters->interval;
+      if (counters) ++(verdict.used_integers ? counters->integer : counters->interval);
       return verdict.toi;
     }
     if (counters) ++counters->exact;

@@ -41,6 +41,7 @@ namespace exactccd::separation {
 struct IntervalVerdict {
   bool decided = false;
   std::optional<TimeInterval> toi;
+  bool used_integers = false;  ///< a sign was decided exactly with GMP integers
 };
 
 namespace interval_detail {
@@ -102,7 +103,7 @@ inline bool holds(const Term<I>& term, const I& t) {
 /// certain, else exactly in rationals (a root at a double gives 0).
 template <std::size_t N>
 int distance_sign_at(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, double d, double m,
-                     double* approximation = nullptr) {
+                     double* approximation, bool& used_integers) {
   constexpr std::size_t P = N / 2;
   std::array<Vec3T<I>, P> at;
   const I mi(m);
@@ -113,6 +114,7 @@ int distance_sign_at(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, 
   if (approximation) *approximation = CGAL::to_double(value);
   const int s = certain_sign(value);
   if (s != 0) return s;
+  used_integers = true;
   // Exactly, in integers: every double is an integer times 2^e; scaling every length (the
   // coordinates and d) by one power of two 2^S multiplies f, homogeneous of degree 2, 4 or 6 in
   // lengths, by a positive factor, so its sign is unchanged. With E the least ulp exponent of
@@ -206,8 +208,9 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
         // the last two steps did not halve the cell, so that the cell shrinks geometrically.
         double a = cell.a, b = cell.b;
         double fa = 0, fb = 0;
-        distance_sign_at(feature, x, d, a, &fa);
-        distance_sign_at(feature, x, d, b, &fb);
+        bool used_integers = false;
+        distance_sign_at(feature, x, d, a, &fa, used_integers);
+        distance_sign_at(feature, x, d, b, &fb, used_integers);
         double previous_width = b - a;
         bool bisect = false;
         while (true) {
@@ -218,8 +221,8 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
           if (!(a < m && m < b)) m = a + (b - a) / 2;
           if (!(a < m && m < b)) m = next_a;
           double approximation = 0;
-          const int s = distance_sign_at(feature, x, d, m, &approximation);
-          if (s == 0) return {true, TimeInterval{m, m}};  // f(m) = 0 exactly: t* = m
+          const int s = distance_sign_at(feature, x, d, m, &approximation, used_integers);
+          if (s == 0) return {true, TimeInterval{m, m}, true};  // f(m) = 0 exactly: t* = m
           // The approximate value at m with the certain sign, for the next estimate.
           const double fm = s * std::max(std::abs(approximation), 0x1p-1000);
           if (s > 0) {
@@ -233,7 +236,7 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
           previous_width = b - a;
         }
         if (std::nextafter(a, std::numeric_limits<double>::infinity()) != b) return undecided;
-        return {true, TimeInterval{a, b}};
+        return {true, TimeInterval{a, b}, used_integers};
       }
     }
     if (cell.depth >= kMaxDepth) return undecided;

@@ -1,6 +1,9 @@
 // exactccd bench: every method on the same loaded queries, several repetitions.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <filesystem>
 #include <optional>
 #include <iostream>
@@ -37,12 +40,22 @@ const CommandSpec& command() {
         "\n"
         "Timing: each repetition times the whole dataset for each method in turn (methods interleaved\n"
         "within a repetition, so drift affects them alike); time per query = elapsed / queries.\n"
-        "mean_ns and median_ns are the mean and median of that figure over the repetitions.\n";
+        "mean_ns and median_ns are the mean and median of that figure over the repetitions.\n"
+        "\n"
+        "Minimum separation: --min-distances D1,D2,... runs every method at each d (with --relative,\n"
+        "d is that fraction of each query's bounding-box size: the largest extent of its points at\n"
+        "t0 and t1); FP and FN at d > 0 or tmax < 1 are against Method::exact at the same question\n"
+        "(the file's truth column is the contact question's). Only filtered and exact answer them.\n"
+        "gmp_cgal: queries of the filtered method decided with GMP integers or CGAL (integer + exact).\n";
     c.options = {
         kind_option("query kind of the files (default: inferred from the path)"),
         integer_option("--repetitions", "N", 1, kMaxRepetitions, "5", "repetitions per dataset and method"),
         choice_list_option("--methods", "LIST", all_method_names(), "naive,filtered,exact",
                            "the methods to run"),
+        text_option("--min-distances", "LIST", "0", "comma-separated minimum separations d >= 0"),
+        flag_option("--relative", "each d of --min-distances is a fraction of the query's box size"),
+        real_option("--tmax", "T", std::numeric_limits<double>::denorm_min(), 1.0, "1",
+                    "only times t in [0, T] count (the nearest double to T)"),
         text_option("--json", "FILE", "",
                     "also write the results as a JSON array ('-' for stdout; the table then\n"
                     "goes to stderr): per (dataset, method) the table's figures,\n"
@@ -57,12 +70,47 @@ const CommandSpec& command() {
 
 struct Result {
   std::string dataset, kind, method;
+  double min_distance = 0;  ///< d, or the fraction of the box size when relative
+  bool relative = false;
+  double tmax = 1;
   std::size_t queries = 0, fp = 0, fn = 0;
   std::size_t truth_disagrees_with_exact = 0;  ///< the dataset's truth column vs Method::exact
   double mean_ns = 0, median_ns = 0;
   StageCounters stages;
   std::uint64_t exact_fallbacks = 0;
 };
+
+/// The largest extent of a query's bounding box over all its points at t0 and t1.
+double box_size(const std::array<Vec3, 8>& rows, int count) {
+  double size = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    double lo = 0, hi = 0;
+    for (int k = 0; k < count; ++k) {
+      const double c = axis == 0 ? rows[k].x : axis == 1 ? rows[k].y : rows[k].z;
+      lo = k == 0 ? c : std::min(lo, c);
+      hi = k == 0 ? c : std::max(hi, c);
+    }
+    size = std::max(size, hi - lo);
+  }
+  return size;
+}
+
+/// The comma-separated list of --min-distances (each a finite number >= 0).
+std::vector<double> parse_distances(const std::string& list) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string item = list.substr(start, end - start);
+    char* stop = nullptr;
+    const double d = std::strtod(item.c_str(), &stop);
+    if (item.empty() || *stop != '\0' || !std::isfinite(d) || d < 0)
+      throw UsageError("bench: --min-distances: '" + item + "' is not a finite number >= 0");
+    out.push_back(d);
+    start = end + 1;
+  }
+  return out;
+}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -101,13 +149,16 @@ void write_json(std::ostream& out, const std::vector<Result>& results) {
   for (std::size_t i = 0; i < results.size(); ++i) {
     const Result& r = results[i];
     out << "  {\"dataset\": " << json_string(r.dataset) << ", \"kind\": \"" << r.kind << "\", \"method\": \""
-        << r.method << "\", \"queries\": " << r.queries << ", \"mean_ns\": " << r.mean_ns
+        << r.method << "\", \"min_distance\": " << r.min_distance << ", \"relative\": "
+        << (r.relative ? "true" : "false") << ", \"tmax\": " << r.tmax << ", \"queries\": " << r.queries << ", \"mean_ns\": " << r.mean_ns
         << ", \"median_ns\": " << r.median_ns << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn
-        << ", \"fp_fn_against\": \"file truth column\", \"truth_disagrees_with_exact\": "
+        << ", \"fp_fn_against\": \""
+        << (r.min_distance == 0 && r.tmax == 1 ? "file truth column" : "Method::exact at the same d and tmax")
+        << "\", \"truth_disagrees_with_exact\": "
         << r.truth_disagrees_with_exact
         << ", \"exact_fallbacks\": " << r.exact_fallbacks << ", \"stages\": {\"volume_exclusion\": "
         << r.stages.volume_exclusion << ", \"static_predicates\": " << r.stages.static_predicates
-        << ", \"interval\": " << r.stages.interval
+        << ", \"separating_direction\": " << r.stages.separating_direction << ", \"interval\": " << r.stages.interval
         << ", \"integer\": " << r.stages.integer << ", \"exact\": " << r.stages.exact << "}}"
         << (i + 1 < results.size() ? "," : "") << "\n";
   }
@@ -127,6 +178,9 @@ int run_bench(int argc, char** argv) {
   std::vector<tools::Method> methods;
   for (const std::string& m : options.list("--methods")) methods.push_back(parse_method(m));
   const std::string json = options.has("--json") ? options.text("--json") : "";
+  const std::vector<double> distances = parse_distances(options.text("--min-distances"));
+  const bool relative = options.flag("--relative");
+  const double tmax = options.real("--tmax");
   std::vector<std::string> files = options.positionals();
   // An unwritable --json FILE fails now, not after the whole run.
   std::optional<AtomicOutputFile> json_file;
@@ -138,75 +192,97 @@ int run_bench(int argc, char** argv) {
   for (const std::string& f : files) {
     datasets.push_back(load_dataset(f, kind));
     datasets.back().name = dataset_name(f);
-    for (tools::Method m : methods) require_double_range(datasets.back(), m);
+    for (tools::Method m : methods) {
+      require_double_range(datasets.back(), m);
+      for (double d : distances) require_method_answers(m, datasets.back().kind, CcdParams{d, tmax});
+    }
   }
 
   FILE* table = json == "-" ? stderr : stdout;
   std::fprintf(table, "FP and FN: against each file's truth column; truth!=exact: queries whose truth column "
                       "disagrees with Method::exact\n");
-  std::fprintf(table, "%-34s %4s %-9s %8s %10s %10s %6s %6s %12s %9s  %s\n", "dataset", "kind", "method",
-               "queries", "mean_ns", "median_ns", "FP", "FN", "truth!=exact", "exact_fb",
-               "stages (vol/static/int/integer/exact)");
+  std::fprintf(table, "%-34s %4s %-9s %9s %8s %10s %10s %6s %6s %12s %9s %8s  %s\n", "dataset", "kind", "method",
+               relative ? "d/box" : "d", "queries", "mean_ns", "median_ns", "FP", "FN", "truth!=exact", "exact_fb",
+               "gmp_cgal", "stages (vol/static/sep/int/integer/exact)");
   std::vector<Result> results;
   for (const Dataset& d : datasets) {
     const std::size_t n = d.queries.size();
     // FP and FN are counted against the file's published truth column; the exact reference
     // (Method::exact) says how far that column can be trusted.
-    const std::vector<bool>& reference = d.queries.truth;
     std::size_t truth_disagrees_with_exact = 0;
     for (std::size_t i = 0; i < n; ++i)
-      truth_disagrees_with_exact += run_query(d, i, tools::Method::exact, nullptr, false).has_value() != reference[i];
+      truth_disagrees_with_exact +=
+          run_query(d, i, tools::Method::exact, nullptr, false).has_value() != d.queries.truth[i];
     if (truth_disagrees_with_exact > 0)
       std::fprintf(stderr, "exactccd bench: %s: the truth column disagrees with Method::exact on %zu of %zu "
                            "queries: its FP and FN are against that column\n",
                    d.path.c_str(), truth_disagrees_with_exact, n);
-    std::vector<std::vector<double>> per_query_ns(methods.size());
-    std::vector<Result> rows(methods.size());
-    for (int rep = 0; rep < repetitions; ++rep) {
-      for (std::size_t m = 0; m < methods.size(); ++m) {
-        StageCounters counters;
-        std::vector<bool> answer(n);
-        const double start = now_seconds();
+    const int points = d.queries.layout.rows;
+    for (const double distance : distances) {
+      // Each query's question, set before timing.
+      std::vector<CcdParams> params(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double size = relative ? box_size(d.doubles[i] ? *d.doubles[i] : io::nearest_double_rows(d.queries.rows[i]), points) : 1.0;
+        params[i] = CcdParams{relative ? distance * size : distance, tmax};
+      }
+      const bool contact_question = distance == 0 && tmax == 1;
+      std::vector<bool> reference = d.queries.truth;
+      if (!contact_question)
         for (std::size_t i = 0; i < n; ++i)
-          answer[i] = run_query(d, i, methods[m], &counters, false).has_value();
-        const double elapsed = now_seconds() - start;
-        per_query_ns[m].push_back(n ? 1e9 * elapsed / n : 0);
-        if (rep == 0) {
-          Result& r = rows[m];
-          r.dataset = d.name;
-          r.kind = kind_name(d.kind);
-          r.method = method_name(methods[m]);
-          r.queries = n;
-          r.truth_disagrees_with_exact = truth_disagrees_with_exact;
-          for (std::size_t i = 0; i < n; ++i) {
-            r.fp += answer[i] && !reference[i];
-            r.fn += !answer[i] && reference[i];
+          reference[i] = run_query(d, i, tools::Method::exact, nullptr, false, params[i]).has_value();
+      std::vector<std::vector<double>> per_query_ns(methods.size());
+      std::vector<Result> rows(methods.size());
+      for (int rep = 0; rep < repetitions; ++rep) {
+        for (std::size_t m = 0; m < methods.size(); ++m) {
+          StageCounters counters;
+          std::vector<bool> answer(n);
+          const double start = now_seconds();
+          for (std::size_t i = 0; i < n; ++i)
+            answer[i] = run_query(d, i, methods[m], &counters, false, params[i]).has_value();
+          const double elapsed = now_seconds() - start;
+          per_query_ns[m].push_back(n ? 1e9 * elapsed / n : 0);
+          if (rep == 0) {
+            Result& r = rows[m];
+            r.dataset = d.name;
+            r.kind = kind_name(d.kind);
+            r.method = method_name(methods[m]);
+            r.min_distance = distance;
+            r.relative = relative;
+            r.tmax = tmax;
+            r.queries = n;
+            r.truth_disagrees_with_exact = truth_disagrees_with_exact;
+            for (std::size_t i = 0; i < n; ++i) {
+              r.fp += answer[i] && !reference[i];
+              r.fn += !answer[i] && reference[i];
+            }
+            r.stages = counters;
+            r.exact_fallbacks = methods[m] == tools::Method::exact ? n : methods[m] == tools::Method::filtered ? counters.exact : 0;
           }
-          r.stages = counters;
-          r.exact_fallbacks = methods[m] == tools::Method::exact ? n : methods[m] == tools::Method::filtered ? counters.exact : 0;
         }
       }
-    }
-    for (std::size_t m = 0; m < methods.size(); ++m) {
-      Result& r = rows[m];
-      double sum = 0;
-      for (double x : per_query_ns[m]) sum += x;
-      r.mean_ns = sum / per_query_ns[m].size();
-      r.median_ns = median(per_query_ns[m]);
-      std::string stages = "-";
-      if (methods[m] == tools::Method::filtered && n) {
-        char buf[128];
-        std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.1f%% / %.2f%% / %.3f%%",
-                      100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.static_predicates / n,
-                      100.0 * r.stages.interval / n,
-                      100.0 * r.stages.integer / n, 100.0 * r.stages.exact / n);
-        stages = buf;
+      for (std::size_t m = 0; m < methods.size(); ++m) {
+        Result& r = rows[m];
+        double sum = 0;
+        for (double x : per_query_ns[m]) sum += x;
+        r.mean_ns = sum / per_query_ns[m].size();
+        r.median_ns = median(per_query_ns[m]);
+        std::string stages = "-";
+        std::string gmp_cgal = "-";
+        if (methods[m] == tools::Method::filtered && n) {
+          char buf[160];
+          std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.1f%% / %.1f%% / %.2f%% / %.3f%%",
+                        100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.static_predicates / n,
+                        100.0 * r.stages.separating_direction / n, 100.0 * r.stages.interval / n,
+                        100.0 * r.stages.integer / n, 100.0 * r.stages.exact / n);
+          stages = buf;
+          gmp_cgal = std::to_string(r.stages.integer + r.stages.exact);
+        }
+        std::fprintf(table, "%-34s %4s %-9s %9.3g %8zu %10.1f %10.1f %6zu %6zu %12zu %9llu %8s  %s\n",
+                     r.dataset.c_str(), r.kind.c_str(), r.method.c_str(), r.min_distance, r.queries, r.mean_ns,
+                     r.median_ns, r.fp, r.fn, r.truth_disagrees_with_exact,
+                     static_cast<unsigned long long>(r.exact_fallbacks), gmp_cgal.c_str(), stages.c_str());
+        results.push_back(r);
       }
-      std::fprintf(table, "%-34s %4s %-9s %8zu %10.1f %10.1f %6zu %6zu %12zu %9llu  %s\n", r.dataset.c_str(),
-                   r.kind.c_str(), r.method.c_str(), r.queries, r.mean_ns, r.median_ns, r.fp, r.fn,
-                   r.truth_disagrees_with_exact, static_cast<unsigned long long>(r.exact_fallbacks),
-                   stages.c_str());
-      results.push_back(r);
     }
   }
   if (!json.empty()) {
