@@ -14,6 +14,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
+#include "scene/broad_phase.hpp"
 #include "scene_support.hpp"
 
 namespace exactccd {
@@ -382,6 +383,51 @@ TEST(SceneSeparation, BroadPhaseGrowsBoxesByD) {
   EXPECT_TRUE(find_collisions(s, options(1, 0.3, 1.0)).size() == 1u);  // exactly d apart
   // A huge d: every pair, bounds overflowing to infinity stay outside.
   EXPECT_EQ(find_collisions(s, options(2, std::numeric_limits<double>::max(), 1.0)).size(), 3u);
+}
+
+// earliest_toi's pruning by time grows its boxes over [0, h] by d too: on one thread the
+// edge-edge pair (first in the candidate order) comes within d = 0.5 at t = 0.5, after which the
+// two static points 0.3 apart (within d from t = 0, their boxes disjoint) must not be skipped.
+TEST(SceneSeparation, EarliestToiPrunesWithGrownBoxes) {
+  const Scene2d s{{{0, 0}, {2, 0}, {0, 1.5}, {2, 1.5}, {10, 0}, {10.3, 0}},
+                  {{0, 0}, {2, 0}, {0, -0.5}, {2, -0.5}, {10, 0}, {10.3, 0}},
+                  {{0, 1}, {2, 3}},
+                  {4, 5}};
+  const auto all = find_collisions(s, options(1, 0.5, 1.0));
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_TRUE(all[0].toi == (TimeInterval{0.5, 0.5}));
+  EXPECT_EQ(all[1].kind, CollisionKind::point_point);
+  for (unsigned threads : {1u, 2u}) EXPECT_TRUE(*earliest_toi(s, options(threads, 0.5, 1.0)) == (TimeInterval{0, 0}));
+}
+
+// inflated() rounds outwards: against exact rationals, on bounds where fl(lo - d) rounds up
+// (towards the box) as often as down.
+TEST(SceneSeparation, InflatedBoxesHoldTheExactBounds) {
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> exponent(-60, 60);
+  int inward = 0;
+  for (int i = 0; i < 20000; ++i) {
+    scene::Box box;
+    for (int k = 0; k < 3; ++k) {
+      box.lo[k] = std::ldexp(unit(rng), exponent(rng));
+      box.hi[k] = box.lo[k] + std::ldexp(std::fabs(unit(rng)), exponent(rng));
+    }
+    const double d = std::ldexp(std::fabs(unit(rng)), exponent(rng));
+    const scene::Box out = scene::inflated(box, d);
+    for (int k = 0; k < 3; ++k) {
+      const mpq_class lo = mpq_class(box.lo[k]) - mpq_class(d), hi = mpq_class(box.hi[k]) + mpq_class(d);
+      ASSERT_LE(mpq_class(out.lo[k]), lo) << box.lo[k] << " " << d;
+      ASSERT_GE(mpq_class(out.hi[k]), hi) << box.hi[k] << " " << d;
+      inward += mpq_class(box.lo[k] - d) > lo;  // the plain difference would have cut into the box
+    }
+  }
+  EXPECT_GT(inward, 1000);
+  const scene::Box same = scene::inflated(scene::Box{{{1, 2, 3}}, {{4, 5, 6}}}, 0.0);  // d = 0: unchanged
+  EXPECT_TRUE(same.lo == (std::array<double, 3>{1, 2, 3}) && same.hi == (std::array<double, 3>{4, 5, 6}));
+  const double big = std::numeric_limits<double>::max();
+  const scene::Box huge = scene::inflated(scene::Box{{{-big, 0, 0}}, {{big, 0, 0}}}, big);
+  EXPECT_TRUE(std::isinf(huge.lo[0]) && huge.lo[0] < 0 && std::isinf(huge.hi[0]) && huge.hi[0] > 0);
 }
 
 // A point falls onto a static 2D edge from (0, 0) to (2, 0): p = (1, 1 - 2t) touches it at
