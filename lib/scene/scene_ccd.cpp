@@ -44,12 +44,6 @@ struct Ref {
   std::array<int, 2> pair;
 };
 
-const std::vector<scene::Triangle>& triangles_of(const Scene& s) { return s.triangles; }
-const std::vector<scene::Triangle>& triangles_of(const Scene2d&) {
-  static const std::vector<scene::Triangle> none;
-  return none;
-}
-
 /// The candidates of a 3D or 2D scene as one index range, the kinds' lists one after the other
 /// in CollisionKind order, with the question params = {d, tmax}. Every kind is handled by the
 /// same code: a pair is two sides of vertices, its query their points at t0 and t1 (the query
@@ -77,6 +71,7 @@ struct CandidateRange {
 
   std::size_t size() const { return offsets[4]; }
 
+  /// Candidate k of the range.
   Ref at(std::size_t k) const {
     std::size_t i = 0;
     while (k >= offsets[i + 1]) ++i;
@@ -89,7 +84,7 @@ struct CandidateRange {
     const auto edge = [&](int e) { return Side{{{prim.edges[e][0], prim.edges[e][1], 0}}, 2}; };
     switch (r.kind) {
       case CollisionKind::vertex_face: {
-        const scene::Triangle& t = triangles_of(scene)[r.pair[1]];
+        const scene::Triangle& t = scene::triangles_of(scene)[r.pair[1]];
         return {point(r.pair[0]), Side{t, 3}};
       }
       case CollisionKind::edge_edge: return {edge(r.pair[0]), edge(r.pair[1])};
@@ -119,17 +114,17 @@ struct CandidateRange {
     throw std::logic_error("exactccd scene: a vertex-face pair in a 2D scene");
   }
 
-  /// The time of impact of candidate k (std::nullopt: no collision in [0, tmax]).
+  /// The time of impact of a candidate (std::nullopt: no collision in [0, tmax]).
   std::optional<TimeInterval> toi(const Ref& r) const {
     return with_query(r, [&](const auto& q) { return exactccd::toi(q, params); });
   }
 
-  /// Whether candidate k collides at all.
+  /// Whether a candidate collides at all.
   bool collides(const Ref& r) const {
     return with_query(r, [&](const auto& q) { return exactccd::ccd(q, params); });
   }
 
-  /// Candidate k as a Collision with the given time of impact.
+  /// A candidate as a Collision with the given time of impact.
   Collision collision(const Ref& r, const TimeInterval& toi) const {
     Collision c;
     c.kind = r.kind;

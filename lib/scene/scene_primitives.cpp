@@ -1,12 +1,12 @@
 #include "scene/scene_primitives.hpp"
 
-#include "scene/time_bounds.hpp"
-
 #include <algorithm>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "scene/time_bounds.hpp"
 
 namespace exactccd {
 namespace {
@@ -92,12 +92,6 @@ void require_valid_triangles(const std::vector<Triangle>& triangles, std::size_t
 }
 
 namespace {
-
-const std::vector<Triangle>& triangles_of(const Scene& s) { return s.triangles; }
-const std::vector<Triangle>& triangles_of(const Scene2d&) {
-  static const std::vector<Triangle> none;
-  return none;
-}
 
 /// The primitives of a 3D or 2D scene (validated); `with_points`: whether isolated points
 /// form point-edge and point-point pairs.

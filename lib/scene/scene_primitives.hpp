@@ -47,6 +47,13 @@ ScenePrimitives scene_primitives(const Scene2d& scene, const CcdParams& params =
 /// is in (0, 1].
 void require_valid_params(const CcdParams& params);
 
+/// The triangles of a scene (none in the plane).
+inline const std::vector<Triangle>& triangles_of(const Scene& s) { return s.triangles; }
+inline const std::vector<Triangle>& triangles_of(const Scene2d&) {
+  static const std::vector<Triangle> none;
+  return none;
+}
+
 /// A point as a 3D point (the plane z = 0 for Vec2).
 inline Vec3 lift(const Vec3& p) { return p; }
 inline Vec3 lift(const Vec2& p) { return {p.x, p.y, 0.0}; }
