@@ -116,7 +116,7 @@ inline std::vector<Collision> brute_force_collisions(const Scene& s, Method meth
 
 inline bool same(const Collision& a, const Collision& b) {
   return a.kind == b.kind && a.vertex == b.vertex && a.triangle == b.triangle && a.edge_a == b.edge_a &&
-         a.edge_b == b.edge_b && a.toi == b.toi;
+         a.edge_b == b.edge_b && a.vertex_b == b.vertex_b && a.toi == b.toi;
 }
 
 }  // namespace exactccd::testing

@@ -6,16 +6,28 @@
 // - the vertices of the scene: every vertex referenced by a triangle, an extra edge or a point
 //   (vertices referenced by nothing take part in nothing);
 // - its edges: the unique undirected edges of the triangles, and the extra edges;
+// - its isolated points: the listed points that are an endpoint of no edge;
 // - its triangles.
-// A vertex-face (VF) pair is a vertex and a triangle, an edge-edge (EE) pair two distinct edges.
-// Pairs sharing a vertex index are never tested (a vertex against its own triangles, edges with
-// a common endpoint): they touch by construction. Every other pair is decided exactly, as the
-// primitive queries of ccd.hpp decide it, so the scene answers are exact too: a broad phase of
-// swept boxes drops only pairs that cannot touch (its box test is exact), and a time of impact
-// is the tightest double interval holding the exact time.
+// A vertex-face (VF) pair is a vertex and a triangle, an edge-edge (EE) pair two distinct edges;
+// with a minimum separation d > 0 (SceneOptions::min_distance) also point-edge (PE) pairs, an
+// isolated point and an edge, and point-point (PP) pairs, two isolated points. Pairs sharing a
+// vertex index are never tested (a vertex against its own triangles, edges with a common
+// endpoint): they touch by construction. Every other pair is decided exactly, as the primitive
+// queries of ccd.hpp decide it with CcdParams{d, tmax}: it collides iff its two closed
+// primitives come within distance <= d at some t in [0, tmax]. So the scene answers are exact
+// too: a broad phase of swept boxes drops only pairs that cannot come within d (its box test is
+// exact at d = 0 and certified when the boxes are inflated by d), and a time of impact is the
+// tightest double interval holding the exact time.
+//
+// Why PE and PP pairs only for d > 0 (in 3D): at d = 0 the VF and EE pairs are the contacts
+// the library has always reported (a point meeting an extra edge or another point in space is
+// not a VF or EE contact); for d > 0, VF covers a point against a triangle with its edges and
+// vertices, EE an edge endpoint against another edge, and PE / PP the isolated points against
+// the extra edges and each other (PE also repeats the triangles' edges, which VF covers too).
+// In the plane (Scene2d) there are no triangles: EE, PE and PP pairs are tested for every d.
 //
 // All functions are thread-safe and keep no global state; they throw std::invalid_argument on a
-// malformed scene (see validate()).
+// malformed scene (see validate()) or invalid options (see SceneOptions).
 #pragma once
 
 #include <array>
@@ -33,7 +45,19 @@ struct Scene {
   std::vector<Vec3> positions_t1;              ///< vertex positions at t = 1 (same size)
   std::vector<std::array<int, 3>> triangles;   ///< triangles (three distinct vertex indices)
   std::vector<std::array<int, 2>> edges;       ///< extra edges (codimensional), in EE and VF
-  std::vector<int> points;                     ///< isolated points, VF vertices only
+  std::vector<int> points;                     ///< points: VF vertices; with d > 0, those on no edge also in PE and PP
+};
+
+/// A scene in the plane: vertices moving linearly over one step, x(t) = positions_t0 +
+/// t (positions_t1 - positions_t0) for t in [0, 1], with edges and points over them (indices
+/// are 0-based). Its pairs: two edges sharing no vertex index (EE), an isolated point (a listed
+/// point that is an endpoint of no edge) and an edge (PE), two distinct isolated points (PP),
+/// for every minimum separation including 0 (in the plane a point on an edge is a contact).
+struct Scene2d {
+  std::vector<Vec2> positions_t0;              ///< vertex positions at t = 0
+  std::vector<Vec2> positions_t1;              ///< vertex positions at t = 1 (same size)
+  std::vector<std::array<int, 2>> edges;       ///< edges (two distinct vertex indices each)
+  std::vector<int> points;                     ///< points (those on an edge add nothing: EE covers them)
 };
 
 /// Options of the scene functions.
@@ -42,22 +66,39 @@ struct SceneOptions {
   /// are used, and fewer when the system refuses to start more. The results do not depend
   /// on it.
   unsigned threads = 0;
+  /// The minimum separation d: a pair collides when its primitives come within distance <= d
+  /// (Euclidean, between the closed primitives). Finite and >= 0; 0 asks for contact.
+  double min_distance = 0.0;
+  /// The time limit: only times t in [0, tmax] count. In (0, 1].
+  double tmax = 1.0;
 };
+
+/// Throws std::invalid_argument when options.min_distance is negative, NaN or infinite, or
+/// options.tmax is not in (0, 1]. Every scene function taking SceneOptions calls it first.
+void validate(const SceneOptions& options);
 
 /// Which kind of pair a Collision is.
 enum class CollisionKind {
   vertex_face,  ///< a vertex and a triangle
   edge_edge,    ///< two edges
+  point_edge,   ///< an isolated point and an edge (d > 0 in 3D; always in the plane)
+  point_point,  ///< two isolated points (d > 0 in 3D; always in the plane)
 };
 
-/// A colliding pair of primitives and its certified time of impact.
+/// A colliding pair of primitives and its certified time of impact. The fields set per kind
+/// (the others keep their default -1):
+/// - vertex_face: vertex, triangle;
+/// - edge_edge: edge_a, edge_b (each ascending, edge_a < edge_b);
+/// - point_edge: vertex (the isolated point), edge_a (the edge, ascending);
+/// - point_point: vertex and vertex_b (the two isolated points, vertex < vertex_b).
 struct Collision {
-  CollisionKind kind = CollisionKind::vertex_face;  ///< vertex-face or edge-edge
-  int vertex = -1;               ///< vertex-face: the vertex (else -1)
+  CollisionKind kind = CollisionKind::vertex_face;  ///< which kind of pair
+  int vertex = -1;               ///< vertex-face: the vertex; point-edge, point-point: the (first) point
   int triangle = -1;             ///< vertex-face: index into Scene::triangles (else -1)
-  std::array<int, 2> edge_a{{-1, -1}};  ///< edge-edge: first edge, ascending vertex indices
+  std::array<int, 2> edge_a{{-1, -1}};  ///< edge-edge: first edge; point-edge: the edge (ascending vertex indices)
   std::array<int, 2> edge_b{{-1, -1}};  ///< edge-edge: second edge, ascending; edge_a < edge_b
-  TimeInterval toi;              ///< tightest double enclosure of the earliest contact time
+  TimeInterval toi;              ///< tightest double enclosure of the earliest time within min_distance
+  int vertex_b = -1;             ///< point-point: the second point, vertex < vertex_b (else -1)
 };
 
 /// Throws std::invalid_argument, with a message naming the offending element, when the scene
@@ -66,35 +107,66 @@ struct Collision {
 /// vertex index. Every other function calls it first.
 void validate(const Scene& scene);
 
-/// Every colliding pair of the scene with its time of impact: the vertex-face pairs sorted by
-/// (vertex, triangle), then the edge-edge pairs sorted by (edge_a, edge_b). Pairs sharing a
-/// vertex index are excluded. The narrow phase runs on options.threads threads; the result is
-/// the same for any number of threads.
+/// Every colliding pair of the scene with its time of impact (the earliest t in [0, tmax] at
+/// which the pair is within distance <= d, d = options.min_distance, tmax = options.tmax):
+/// sorted by kind in CollisionKind order, vertex-face pairs by (vertex, triangle), edge-edge by
+/// (edge_a, edge_b), point-edge by (vertex, edge_a), point-point by (vertex, vertex_b); the
+/// point kinds only when d > 0. Pairs sharing a vertex index are excluded. The narrow phase runs
+/// on options.threads threads; the result is the same for any number of threads. With the
+/// default options (d = 0, tmax = 1) the pairs are the VF and EE contacts over the whole step.
 std::vector<Collision> find_collisions(const Scene& scene, const SceneOptions& options = {});
 
 /// The earliest time of impact over the scene (the tightest double interval holding the exact
-/// earliest contact time of all pairs), or std::nullopt when no pair collides. Prunes by time:
-/// once a contact with upper bound h is known, a pair is skipped when its primitives' boxes
-/// over [0, h] (enclosed with interval arithmetic) do not overlap, and evaluation stops at a
-/// contact at t = 0.
+/// earliest time in [0, tmax] at which some pair is within distance <= d), or std::nullopt when
+/// no pair collides. Prunes by time: once a collision with upper bound h is known, a pair is
+/// skipped when its primitives' boxes over [0, h] (enclosed with interval arithmetic, inflated
+/// by d with outward rounding) do not overlap, and evaluation stops at a collision at t = 0.
 std::optional<TimeInterval> earliest_toi(const Scene& scene, const SceneOptions& options = {});
 
 /// The earliest of the collisions' times of impact (ordered by lo, then hi), or std::nullopt
-/// for an empty list: earliest_toi(find_collisions(s)) == earliest_toi(s).
+/// for an empty list: earliest_toi(find_collisions(s, o)) == earliest_toi(s, o).
 std::optional<TimeInterval> earliest_toi(const std::vector<Collision>& collisions);
 
-/// True iff no pair of the scene collides during the step; stops at the first collision found.
+/// True iff no pair of the scene collides (comes within distance <= d at some t in [0, tmax]);
+/// stops at the first collision found.
 bool is_collision_free(const Scene& scene, const SceneOptions& options = {});
 
-/// The largest step the motion can take without a collision, conservatively: 1 when the scene
-/// is collision-free; otherwise, with [lo, hi] the earliest time of impact, the largest double
-/// strictly below lo, so that the motion over [0, s] is collision-free exactly. A contact at
-/// t = 0 (lo == 0) allows no step: the result is 0 (and 0 is then not itself collision-free
-/// when the contact is exactly at t = 0).
+/// The largest step s <= tmax over which the motion keeps every pair at distance > d,
+/// conservatively: tmax when no pair collides in [0, tmax]; otherwise, with [lo, hi] the
+/// earliest time of impact, the largest double strictly below lo, so that the motion over
+/// [0, s] is collision-free exactly. A collision at t = 0 (lo == 0) allows no step: the result
+/// is 0 (and 0 is then not itself collision-free when the contact is exactly at t = 0). With
+/// the default options (d = 0, tmax = 1): 1 when collision-free.
 double max_collision_free_step(const Scene& scene, const SceneOptions& options = {});
 
-/// max_collision_free_step given the scene's earliest time of impact (std::nullopt: none).
-double max_collision_free_step(const std::optional<TimeInterval>& earliest);
+/// max_collision_free_step given the scene's earliest time of impact over [0, tmax]
+/// (std::nullopt: none): tmax when none. Throws std::invalid_argument when tmax is not in
+/// (0, 1].
+double max_collision_free_step(const std::optional<TimeInterval>& earliest, double tmax = 1.0);
+
+/// Throws std::invalid_argument, naming the offending element, when the 2D scene is malformed:
+/// positions_t0 and positions_t1 differ in size, a coordinate is NaN or infinite, an index (of
+/// an edge or point) is out of range, or an edge repeats a vertex index.
+void validate(const Scene2d& scene);
+
+/// Every colliding pair of the 2D scene with its time of impact (see find_collisions(const
+/// Scene&, const SceneOptions&)): edge-edge pairs by (edge_a, edge_b), then point-edge by
+/// (vertex, edge_a), then point-point by (vertex, vertex_b), for every d including 0. Decided
+/// with the 2D primitive queries of ccd.hpp (edge_edge_2d_toi, point_edge_2d_toi,
+/// point_point_2d_toi).
+std::vector<Collision> find_collisions(const Scene2d& scene, const SceneOptions& options = {});
+
+/// The earliest time of impact over the 2D scene, or std::nullopt; see earliest_toi(const
+/// Scene&, const SceneOptions&).
+std::optional<TimeInterval> earliest_toi(const Scene2d& scene, const SceneOptions& options = {});
+
+/// True iff no pair of the 2D scene collides; see is_collision_free(const Scene&, const
+/// SceneOptions&).
+bool is_collision_free(const Scene2d& scene, const SceneOptions& options = {});
+
+/// The largest collision-free step of the 2D scene; see max_collision_free_step(const Scene&,
+/// const SceneOptions&).
+double max_collision_free_step(const Scene2d& scene, const SceneOptions& options = {});
 
 /// Exact static self-intersection check of a triangle mesh: true iff
 /// - every two triangles with no vertex index in common are disjoint as closed triangles, and

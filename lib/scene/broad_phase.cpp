@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace exactccd::scene {
@@ -142,32 +143,82 @@ Box swept_box(const MovingMesh& mesh, const int* vertices, int count) {
   return swept_box(mesh.positions_t0, mesh.positions_t1, vertices, count);
 }
 
-Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
-                           const std::vector<Triangle>& triangles, const std::vector<Edge>& edges,
-                           const std::vector<int>& vertices) {
-  std::vector<Box> vertex_boxes(vertices.size()), triangle_boxes(triangles.size()), edge_boxes(edges.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-    vertex_boxes[i] = swept_box(positions_t0, positions_t1, &vertices[i], 1);
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-    triangle_boxes[t] = swept_box(positions_t0, positions_t1, triangles[t].data(), 3);
-  for (std::size_t e = 0; e < edges.size(); ++e)
-    edge_boxes[e] = swept_box(positions_t0, positions_t1, edges[e].data(), 2);
+Box hull(const Box& a, const Box& b) {
+  Box h;
+  for (int k = 0; k < 3; ++k) {
+    h.lo[k] = std::min(a.lo[k], b.lo[k]);
+    h.hi[k] = std::max(a.hi[k], b.hi[k]);
+  }
+  return h;
+}
+
+// If dist(x, y) <= d for x in box A and y in box B, then |x_k - y_k| <= d on every axis k, so
+// [A.lo_k - d, A.hi_k + d] meets [B.lo_k, B.hi_k]: the boxes overlap once one of them (here:
+// both, the more conservative) is grown by d on every side, provided the grown bounds are at
+// least as far out as the exact ones. The computed l = fl(A.lo_k - d) is, in any rounding
+// direction, the exact difference x itself or one of the two doubles around it; so the double
+// below it, nextafter(l, -inf), is <= x (the scene entry points install round-to-nearest
+// anyway). Likewise nextafter(fl(A.hi_k + d), +inf) >= A.hi_k + d. The bounds and d are finite
+// (or +-inf after an earlier overflow, which stays outside), so nothing is NaN; an overflow
+// gives -inf / +inf, still outside. fl(. - d), fl(. + d) and nextafter are monotone, so the
+// hull of inflated vertex boxes equals the inflated hull. The box test stays exact (<=) on the
+// inflated bounds.
+Box inflated(const Box& box, double d) {
+  if (!(d > 0)) return box;
+  Box out;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    out.lo[k] = std::nextafter(box.lo[k] - d, -inf);
+    out.hi[k] = std::nextafter(box.hi[k] + d, inf);
+  }
+  return out;
+}
+
+Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                           const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                           const std::vector<int>& points) {
+  const auto hull_of = [&](const int* v, int n) {
+    Box box = vertex_boxes[v[0]];
+    for (int i = 1; i < n; ++i) box = hull(box, vertex_boxes[v[i]]);
+    return box;
+  };
+  std::vector<Box> vertex_list(vertices.size()), triangle_boxes(triangles.size()), edge_boxes(edges.size()),
+      point_boxes(points.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) vertex_list[i] = vertex_boxes[vertices[i]];
+  for (std::size_t t = 0; t < triangles.size(); ++t) triangle_boxes[t] = hull_of(triangles[t].data(), 3);
+  for (std::size_t e = 0; e < edges.size(); ++e) edge_boxes[e] = hull_of(edges[e].data(), 2);
+  for (std::size_t i = 0; i < points.size(); ++i) point_boxes[i] = vertex_boxes[points[i]];
 
   Candidates c;
-  sweep(vertex_boxes, triangle_boxes, false, [&](int i, int t) {
-    const int v = vertices[i];
-    const Triangle& tri = triangles[t];
-    if (tri[0] != v && tri[1] != v && tri[2] != v) c.vertex_face.push_back({v, t});
-  });
+  if (!triangles.empty())
+    sweep(vertex_list, triangle_boxes, false, [&](int i, int t) {
+      const int v = vertices[i];
+      const Triangle& tri = triangles[t];
+      if (tri[0] != v && tri[1] != v && tri[2] != v) c.vertex_face.push_back({v, t});
+    });
   sweep(edge_boxes, edge_boxes, true, [&](int i, int j) {
     const Edge &a = edges[i], &b = edges[j];
     if (a[0] != b[0] && a[0] != b[1] && a[1] != b[0] && a[1] != b[1]) c.edge_edge.push_back({i, j});
   });
-  std::sort(c.vertex_face.begin(), c.vertex_face.end());
-  c.vertex_face.erase(std::unique(c.vertex_face.begin(), c.vertex_face.end()), c.vertex_face.end());
-  std::sort(c.edge_edge.begin(), c.edge_edge.end());
-  c.edge_edge.erase(std::unique(c.edge_edge.begin(), c.edge_edge.end()), c.edge_edge.end());
+  if (!points.empty()) {
+    // Isolated points are on no edge and distinct: no pair shares a vertex.
+    if (!edges.empty())
+      sweep(point_boxes, edge_boxes, false, [&](int i, int e) { c.point_edge.push_back({points[i], e}); });
+    sweep(point_boxes, point_boxes, true, [&](int i, int j) { c.point_point.push_back({points[i], points[j]}); });
+  }
+  for (auto* list : {&c.vertex_face, &c.edge_edge, &c.point_edge, &c.point_point}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
   return c;
+}
+
+Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
+                           const std::vector<Triangle>& triangles, const std::vector<Edge>& edges,
+                           const std::vector<int>& vertices) {
+  std::vector<Box> boxes(positions_t0.size());
+  for (int v = 0; v < static_cast<int>(boxes.size()); ++v) boxes[v] = swept_box(positions_t0, positions_t1, &v, 1);
+  return find_candidates(boxes, triangles, edges, vertices, {});
 }
 
 Candidates find_candidates(const MovingMesh& mesh, const std::vector<Edge>& edges) {

@@ -9,8 +9,8 @@
 // on a box face. (A conservative margin is what a broad phase needs when its bounds are
 // computed, e.g. positions at intermediate times or a minimum separation added: a rounded
 // bound can land inside the true extent and drop a colliding pair, which CCD then never sees.
-// Such an extension must round its bounds outwards or inflate them by a relative and an
-// absolute margin; here there is nothing to round.)
+// Such an extension must round its bounds outwards: inflated() does so for a minimum
+// separation d, add_vertex_until() in time_bounds.hpp for boxes over [0, h].)
 #pragma once
 
 #include <array>
@@ -26,12 +26,23 @@ struct Box {
 };
 
 /// Candidate pairs of one step: (vertex, triangle) and (edge, edge) by index into the mesh's
-/// vertices, triangles and unique_edges(). Pairs sharing a vertex are excluded (a vertex
-/// against its own triangles, edges with a common endpoint). Sorted, without duplicates.
+/// vertices, triangles and unique_edges(), and (point, edge), (point, point) of isolated
+/// points. Pairs sharing a vertex are excluded (a vertex against its own triangles, edges with
+/// a common endpoint). Sorted, without duplicates.
 struct Candidates {
   std::vector<std::array<int, 2>> vertex_face;  ///< {vertex, triangle}
   std::vector<std::array<int, 2>> edge_edge;    ///< {edge i, edge j}, i < j
+  std::vector<std::array<int, 2>> point_edge;   ///< {point vertex, edge}
+  std::vector<std::array<int, 2>> point_point;  ///< {point vertex p, point vertex q}, p < q
 };
+
+/// The smallest box holding both boxes (exact: min and max).
+Box hull(const Box& a, const Box& b);
+
+/// `box` grown by d >= 0 on every side with outward rounding: it holds every point whose
+/// distance to the box is at most d. Two primitives within distance d of each other have
+/// overlapping inflated boxes. d = 0 returns the box itself.
+Box inflated(const Box& box, double d);
 
 /// The swept box of a set of vertices of the mesh.
 Box swept_box(const MovingMesh& mesh, const int* vertices, int count);
@@ -54,6 +65,14 @@ Candidates find_candidates(const MovingMesh& mesh, const std::vector<Edge>& edge
 Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                            const std::vector<Triangle>& triangles, const std::vector<Edge>& edges,
                            const std::vector<int>& vertices);
+
+/// The candidates given the box of every vertex (indexed by vertex; the box of a triangle or
+/// edge is the hull of its vertices' boxes): {vertex, triangle} for the `vertices` (ascending),
+/// {edge i, edge j}, and, for the isolated `points` (ascending, distinct, on no edge), {point,
+/// edge} and {point p, point q}; every pair whose boxes overlap and which shares no vertex.
+Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                           const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                           const std::vector<int>& points);
 
 /// Pairs {i, j}, i < j, of triangles whose boxes over `positions` (a static mesh) overlap,
 /// adjacent triangles included; sorted.

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/time_bounds.hpp"
+
 namespace exactccd {
 namespace {
 
@@ -45,7 +47,36 @@ void validate(const Scene& scene) {
     require_valid_indices(std::array<int, 1>{scene.points[i]}, i, "point", n);
 }
 
+void validate(const Scene2d& scene) {
+  const std::size_t n = scene.positions_t0.size();
+  if (scene.positions_t1.size() != n)
+    fail("positions_t0 has " + std::to_string(n) + " vertices but positions_t1 has " +
+         std::to_string(scene.positions_t1.size()));
+  if (n > static_cast<std::size_t>(INT_MAX)) fail("more than INT_MAX vertices");
+  for (const auto* positions : {&scene.positions_t0, &scene.positions_t1})
+    for (std::size_t i = 0; i < positions->size(); ++i) {
+      const Vec2& p = (*positions)[i];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        fail(std::string(positions == &scene.positions_t0 ? "positions_t0" : "positions_t1") + "[" +
+             std::to_string(i) + "] has a non-finite coordinate (NaN or infinity)");
+    }
+  for (std::size_t i = 0; i < scene.edges.size(); ++i) require_valid_indices(scene.edges[i], i, "edge", n);
+  for (std::size_t i = 0; i < scene.points.size(); ++i)
+    require_valid_indices(std::array<int, 1>{scene.points[i]}, i, "point", n);
+}
+
+void validate(const SceneOptions& options) {
+  scene::require_valid_params(CcdParams{options.min_distance, options.tmax});
+}
+
 namespace scene {
+
+void require_valid_params(const CcdParams& params) {
+  if (!(std::isfinite(params.min_distance) && params.min_distance >= 0))
+    fail("min_distance must be finite and >= 0, not " + std::to_string(params.min_distance));
+  if (!(params.tmax > 0 && params.tmax <= 1))
+    fail("tmax must be in (0, 1], not " + std::to_string(params.tmax));
+}
 
 void require_finite_positions(const std::vector<Vec3>& positions, const char* name) {
   for (std::size_t i = 0; i < positions.size(); ++i) {
@@ -60,22 +91,61 @@ void require_valid_triangles(const std::vector<Triangle>& triangles, std::size_t
     require_valid_indices(triangles[i], i, "triangle", vertex_count);
 }
 
-ScenePrimitives scene_primitives(const Scene& s) {
-  validate(s);
+namespace {
+
+/// The primitives of a 3D or 2D scene (validated); `with_points`: whether isolated points
+/// form point-edge and point-point pairs.
+template <class SceneT>
+ScenePrimitives primitives(const SceneT& s, const CcdParams& params, bool with_points) {
+  const std::vector<Triangle>& triangles = triangles_of(s);
   ScenePrimitives p;
-  p.edges = unique_edges(s.triangles);
+  p.edges = unique_edges(triangles);
   for (const auto& e : s.edges) p.edges.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
   std::sort(p.edges.begin(), p.edges.end());
   p.edges.erase(std::unique(p.edges.begin(), p.edges.end()), p.edges.end());
-  std::vector<bool> used(s.positions_t0.size(), false);
-  for (const Triangle& t : s.triangles)
+  std::vector<bool> used(s.positions_t0.size(), false), on_edge(s.positions_t0.size(), false);
+  for (const Triangle& t : triangles)
     for (int v : t) used[v] = true;
-  for (const Edge& e : p.edges) used[e[0]] = used[e[1]] = true;
+  for (const Edge& e : p.edges) used[e[0]] = used[e[1]] = on_edge[e[0]] = on_edge[e[1]] = true;
   for (int v : s.points) used[v] = true;
   for (std::size_t v = 0; v < used.size(); ++v)
     if (used[v]) p.vertices.push_back(static_cast<int>(v));
-  p.candidates = find_candidates(s.positions_t0, s.positions_t1, s.triangles, p.edges, p.vertices);
+  if (with_points) {
+    for (int v : s.points)
+      if (!on_edge[v]) p.points.push_back(v);
+    std::sort(p.points.begin(), p.points.end());
+    p.points.erase(std::unique(p.points.begin(), p.points.end()), p.points.end());
+  }
+  // Each vertex's box over [0, tmax], grown by d: the exact swept box (input coordinates) over
+  // the whole step, else the certified enclosure of add_vertex_until; then inflated() (both
+  // proofs next to their code). A pair within d at some t in [0, tmax] has overlapping boxes.
+  std::vector<Box> boxes(s.positions_t0.size());
+  for (std::size_t v = 0; v < boxes.size(); ++v) {
+    const Vec3 a = lift(s.positions_t0[v]), b = lift(s.positions_t1[v]);
+    Box box;
+    if (params.tmax == 1.0) {
+      box.lo = {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+      box.hi = {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+    } else {
+      box = empty_box();
+      add_vertex_until(box, a, b, params.tmax);
+    }
+    boxes[v] = inflated(box, params.min_distance);
+  }
+  p.candidates = find_candidates(boxes, triangles, p.edges, p.vertices, p.points);
   return p;
+}
+
+}  // namespace
+
+ScenePrimitives scene_primitives(const Scene& s, const CcdParams& params) {
+  validate(s);
+  return primitives(s, params, params.min_distance > 0);
+}
+
+ScenePrimitives scene_primitives(const Scene2d& s, const CcdParams& params) {
+  validate(s);
+  return primitives(s, params, true);
 }
 
 VertexFaceQuery vertex_face_query(const Scene& s, int v, int t) {

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "exactccd/scene.hpp"
@@ -10,14 +12,18 @@
 
 namespace exactccd::scene {
 
-/// A scene's vertex-face vertices, its edges and its candidate pairs.
+/// A scene's vertex-face vertices, its edges, its isolated points and its candidate pairs.
 struct ScenePrimitives {
   /// Vertices referenced by a triangle, an extra edge or a point; ascending, no duplicates.
   std::vector<int> vertices;
   /// The triangles' unique edges and the extra edges, each ascending, sorted, no duplicates.
   std::vector<Edge> edges;
-  /// {vertex, triangle} and {edge i, edge j} (indices into `edges`, i < j), pairs sharing a
-  /// vertex index excluded; both lists sorted.
+  /// The isolated points taking part in point-edge and point-point pairs: listed points that
+  /// are an endpoint of no edge, ascending, no duplicates. Empty for a 3D scene with d = 0.
+  std::vector<int> points;
+  /// {vertex, triangle}, {edge i, edge j} (indices into `edges`, i < j), {point, edge},
+  /// {point p, point q} (p < q), pairs sharing a vertex index excluded; every list sorted.
+  /// Only pairs whose boxes over [0, tmax], grown by d, overlap.
   Candidates candidates;
 };
 
@@ -29,8 +35,43 @@ void require_finite_positions(const std::vector<Vec3>& positions, const char* na
 /// repeated index.
 void require_valid_triangles(const std::vector<Triangle>& triangles, std::size_t vertex_count);
 
-/// Validates the scene (exactccd::validate) and computes its primitives and candidates.
-ScenePrimitives scene_primitives(const Scene& scene);
+/// Validates the scene (exactccd::validate) and computes its primitives and candidates for the
+/// question "within distance params.min_distance at some t in [0, params.tmax]" (params
+/// assumed valid: exactccd::validate(SceneOptions)).
+ScenePrimitives scene_primitives(const Scene& scene, const CcdParams& params = {});
+
+/// As above for a scene in the plane (no triangles; isolated points for every d).
+ScenePrimitives scene_primitives(const Scene2d& scene, const CcdParams& params = {});
+
+/// Throws std::invalid_argument unless params.min_distance is finite and >= 0 and params.tmax
+/// is in (0, 1].
+void require_valid_params(const CcdParams& params);
+
+/// The triangles of a scene (none in the plane).
+inline const std::vector<Triangle>& triangles_of(const Scene& s) { return s.triangles; }
+inline const std::vector<Triangle>& triangles_of(const Scene2d&) {
+  static const std::vector<Triangle> none;
+  return none;
+}
+
+/// A point as a 3D point (the plane z = 0 for Vec2).
+inline Vec3 lift(const Vec3& p) { return p; }
+inline Vec3 lift(const Vec2& p) { return {p.x, p.y, 0.0}; }
+
+/// The query of a pair: the vertices of side a, then of side b (na + nb of them in all, the
+/// query's points per time), at t = 0 and then at t = 1, in the query's row order.
+template <class Query, class Point>
+Query pair_query(const std::vector<Point>& x0, const std::vector<Point>& x1, const int* a, int na,
+                 const int* b, int nb) {
+  constexpr std::size_t n = std::tuple_size<decltype(rows(std::declval<Query>()))>::value / 2;
+  std::array<Point, 2 * n> r{};
+  for (std::size_t i = 0; i < n && static_cast<int>(i) < na + nb; ++i) {
+    const int v = static_cast<int>(i) < na ? a[i] : b[i - na];
+    r[i] = x0[v];
+    r[n + i] = x1[v];
+  }
+  return from_rows<Query>(r);
+}
 
 /// The vertex-face query of vertex v against triangle t of the scene.
 VertexFaceQuery vertex_face_query(const Scene& scene, int v, int t);
