@@ -23,7 +23,7 @@ const CommandSpec& command() {
   static const CommandSpec spec = [] {
     CommandSpec c;
     c.name = "scene";
-    c.usage = "usage: exactccd scene T0.obj T1.obj [--json] [--threads N]";
+    c.usage = "usage: exactccd scene T0.obj T1.obj [--min-distance D] [--tmax T] [--json] [--threads N]";
     c.description =
         "One time step of a triangle mesh whose vertices move linearly from their positions in T0.obj\n"
         "(t = 0) to those in T1.obj (t = 1); both files must have the same vertex count and faces.\n"
@@ -36,7 +36,9 @@ const CommandSpec& command() {
         "free step (1 when collision-free, else the largest double below the earliest TOI's lower\n"
         "bound) and whether the mesh is free of self-intersections at t = 0 and at t = 1 (the exact\n"
         "static check of exactccd::intersection_free). Indices are 0-based, in OBJ order (a polygon\n"
-        "is fan-triangulated into consecutive triangles).\n"
+        "is fan-triangulated into consecutive triangles). With --min-distance D and --tmax T a pair\n"
+        "collides when it comes within distance D at some t in [0, T] (exactly), and the largest\n"
+        "collision-free step is T when no pair does.\n"
         "\n"
         "Input: OBJ files (.obj), read strictly (README, \"Input files\"); PLY, OFF and STL files are\n"
         "recognised and refused, as are files whose content does not match their extension.\n";
@@ -48,6 +50,7 @@ const CommandSpec& command() {
                     "t0_intersection_free, t1_intersection_free"),
         threads_option("", "narrow phase on N threads (default: all cores; same results)"),
     };
+    for (OptionSpec& o : separation_option_specs()) c.options.push_back(o);
     c.epilogue =
         "exit codes: 0 ran (whatever it found), 2 bad usage or malformed or mismatched files, 1 internal\n"
         "error.\n";
@@ -94,6 +97,9 @@ int run_scene(int argc, char** argv) {
   const bool json = options.flag("--json");
   SceneOptions scene_options;
   if (options.has("--threads")) scene_options.threads = static_cast<unsigned>(options.integer("--threads"));
+  const CcdParams params = separation_params(options);
+  scene_options.min_distance = params.min_distance;
+  scene_options.tmax = params.tmax;
   const std::vector<std::string>& files = options.positionals();
   if (files.size() != 2) throw UsageError("scene: expected two files, T0.obj T1.obj (see exactccd scene --help)");
   const io::TriangleMesh m0 = io::read_mesh(files[0]), m1 = io::read_mesh(files[1]);
@@ -103,11 +109,11 @@ int run_scene(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("scene: ") + e.what());
   }
-  const scene::ScenePrimitives prim = scene::scene_primitives(s);
+  const scene::ScenePrimitives prim = scene::scene_primitives(s, params);
   const std::size_t candidates = prim.candidates.vertex_face.size() + prim.candidates.edge_edge.size();
   const std::vector<Collision> collisions = find_collisions(s, scene_options);
   const std::optional<TimeInterval> earliest = earliest_toi(collisions);
-  const double step = max_collision_free_step(earliest);
+  const double step = max_collision_free_step(earliest, params.tmax);
   const bool free0 = intersection_free(s.positions_t0, s.triangles);
   const bool free1 = intersection_free(s.positions_t1, s.triangles);
   std::size_t vf = 0;
