@@ -10,6 +10,7 @@
 
 #include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::catalogue {
 
@@ -40,5 +41,13 @@ std::vector<EdgeEdgeEntry> edge_edge_cases();
 /// The hand-made cases only, without the scaled and translated copies.
 std::vector<VertexFaceEntry> vertex_face_base_cases();
 std::vector<EdgeEdgeEntry> edge_edge_base_cases();
+
+/// The cases of a kind, by its description (lib/kinds): vertex_face_cases() or
+/// edge_edge_cases(), for code that handles every kind alike.
+inline std::vector<VertexFaceEntry> cases(kinds::VertexFace) { return vertex_face_cases(); }
+inline std::vector<EdgeEdgeEntry> cases(kinds::EdgeEdge) { return edge_edge_cases(); }
+/// The hand-made cases of a kind (base_cases(kinds::VertexFace{}), ...).
+inline std::vector<VertexFaceEntry> base_cases(kinds::VertexFace) { return vertex_face_base_cases(); }
+inline std::vector<EdgeEdgeEntry> base_cases(kinds::EdgeEdge) { return edge_edge_base_cases(); }
 
 }  // namespace exactccd::catalogue

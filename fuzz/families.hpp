@@ -14,16 +14,24 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
 #include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::families {
 
 /// A query of either kind.
 using AnyQuery = std::variant<VertexFaceQuery, EdgeEdgeQuery>;
+
+/// The name of a query's kind (its description's, lib/kinds/primitive_kinds.hpp:
+/// "vertex-face", "edge-edge").
+inline std::string_view kind_name(const AnyQuery& q) {
+  return std::visit([](const auto& x) { return kinds::kind_of<decltype(x)>::name; }, q);
+}
 
 /// The earliest contact time of a colliding instance, known by construction: the only root in
 /// [from, to] of `polynomial` (coefficients c0, c1, ..., lowest degree first). A rational time
@@ -66,7 +74,9 @@ std::optional<std::string> disagreement(const Instance& instance, bool collides,
 /// (delta = 2^-k times the scale; k = kUnperturbed gives the exact degeneracy itself).
 struct Family {
   std::string name;
-  bool vertex_face;  ///< kind: true for vertex-face, false for edge-edge
+  /// Its kind: the name of the kind's description (kinds::VertexFace::name, ...); every
+  /// instance's query is of that kind.
+  std::string_view kind;
   /// toward: perturb towards contact (true) or away from it (false).
   Instance (*make)(int k, bool toward, std::mt19937_64& rng);
   /// The same configuration unplaced, in its local frame (small exact coordinates): what make()
@@ -79,6 +89,16 @@ constexpr int kUnperturbed = -1;
 
 /// Every family, vertex-face first.
 const std::vector<Family>& all_families();
+
+/// The families of a kind (a description of lib/kinds, e.g. kinds::VertexFace), in
+/// all_families() order.
+template <class Kind>
+std::vector<const Family*> families_of_kind() {
+  std::vector<const Family*> out;
+  for (const Family& f : all_families())
+    if (f.kind == Kind::name) out.push_back(&f);
+  return out;
+}
 
 /// The family of that name, or nullptr.
 const Family* find_family(const std::string& name);
@@ -115,8 +135,18 @@ const char* wide_style_name(WideStyle style);
 std::optional<Instance> make_wide(const Family& family, int k, bool toward, WideStyle style,
                                   std::mt19937_64& rng);
 
-/// A random instance of a random family (k uniform in [0, 60] or unperturbed, random direction,
-/// random exact symmetry, offset and power-of-two scale): the fuzzers' and fuzz-against's mix.
-Instance random_instance(std::mt19937_64& rng, std::optional<bool> vertex_face = std::nullopt);
+/// A random instance of a random family of `pool` (k uniform in [0, 60] or unperturbed, random
+/// direction, random exact symmetry, offset and power-of-two scale): fuzz-against's mix.
+Instance random_instance(std::mt19937_64& rng, const std::vector<const Family*>& pool);
+
+/// A random instance of a random family of any kind.
+Instance random_instance(std::mt19937_64& rng);
+
+/// A random instance of a random family of the kind Kind (a description of lib/kinds).
+template <class Kind>
+Instance random_instance(std::mt19937_64& rng) {
+  static const std::vector<const Family*> pool = families_of_kind<Kind>();
+  return random_instance(rng, pool);
+}
 
 }  // namespace exactccd::families

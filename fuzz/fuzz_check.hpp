@@ -18,6 +18,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "fuzz/fuzz_input.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::fuzzing {
 
@@ -41,20 +42,21 @@ inline bool same_toi(const std::optional<TimeInterval>& a, const std::optional<T
   return a.has_value() == b.has_value() && (!a || *a == *b);
 }
 
-/// The same query with the triangle's vertices b and c exchanged (vertex-face) or the two
-/// edges exchanged (edge-edge): by the contract, the answer and TOI are unchanged.
-inline Rows reordered(const Rows& r, bool vertex_face) {
-  Rows s = r;
-  if (vertex_face) {
-    std::swap(s[2], s[3]);
-    std::swap(s[6], s[7]);
-  } else {
-    std::swap(s[0], s[2]);
-    std::swap(s[1], s[3]);
-    std::swap(s[4], s[6]);
-    std::swap(s[5], s[7]);
-  }
-  return s;
+/// The same query with the triangle's vertices b and c exchanged: by the contract, the answer
+/// and TOI are unchanged. (One overload per kind: the kind's symmetry.)
+inline VertexFaceQuery reordered(VertexFaceQuery q) {
+  std::swap(q.b_t0, q.c_t0);
+  std::swap(q.b_t1, q.c_t1);
+  return q;
+}
+
+/// The same query with the two edges exchanged: the answer and TOI are unchanged.
+inline EdgeEdgeQuery reordered(EdgeEdgeQuery q) {
+  std::swap(q.a0_t0, q.b0_t0);
+  std::swap(q.a1_t0, q.b1_t0);
+  std::swap(q.a0_t1, q.b0_t1);
+  std::swap(q.a1_t1, q.b1_t1);
+  return q;
 }
 
 /// Checks the property (see the file comment) on one finite query of the kind: nullopt when it
@@ -62,19 +64,12 @@ inline Rows reordered(const Rows& r, bool vertex_face) {
 /// and the query as a benchmark CSV with the exact answer as truth.
 template <class Query>
 std::optional<std::string> find_violation(const Rows& r) {
-  constexpr bool vf = std::is_same_v<Query, VertexFaceQuery>;
-  const auto ccd = [](const Rows& x, Method m) {
-    if constexpr (vf) return vertex_face_ccd(from_rows<Query>(x), m);
-    else return edge_edge_ccd(from_rows<Query>(x), m);
-  };
-  const auto toi = [](const Rows& x, Method m) {
-    if constexpr (vf) return vertex_face_toi(from_rows<Query>(x), m);
-    else return edge_edge_toi(from_rows<Query>(x), m);
-  };
-  const bool filtered = ccd(r, Method::filtered);
-  const bool exact = ccd(r, Method::exact);
-  const std::optional<TimeInterval> filtered_toi = toi(r, Method::filtered);
-  const std::optional<TimeInterval> exact_toi = toi(r, Method::exact);
+  using Kind = kinds::kind_of<Query>;
+  const Query q = from_rows<Query>(r);
+  const bool filtered = ccd(q, Method::filtered);
+  const bool exact = ccd(q, Method::exact);
+  const std::optional<TimeInterval> filtered_toi = toi(q, Method::filtered);
+  const std::optional<TimeInterval> exact_toi = toi(q, Method::exact);
   const char* what = nullptr;
   if (filtered != exact) {
     what = "filtered and exact answers differ";
@@ -87,16 +82,16 @@ std::optional<std::string> find_violation(const Rows& r) {
   } else if (!well_formed(exact_toi)) {
     what = "the exact TOI is not a tightest interval in [0, 1]";
   } else {
-    const Rows s = reordered(r, vf);
+    const Query s = reordered(q);
     if (ccd(s, Method::filtered) != filtered || !same_toi(toi(s, Method::filtered), filtered_toi))
       what = "the filtered answer or TOI changes when the triangle's vertices / the edges are reordered";
   }
   if (!what) return std::nullopt;
-  return std::string("exactccd fuzz: ") + what + " on a " + (vf ? "vertex-face" : "edge-edge") +
-         " query\n" + hex_rows(r, vf) + "filtered: ccd " + (filtered ? "1" : "0") + ", toi " +
+  return std::string("exactccd fuzz: ") + what + " on a " + std::string(Kind::name) + " query\n" +
+         hex_rows<Kind>(r) + "filtered: ccd " + (filtered ? "1" : "0") + ", toi " +
          toi_string(filtered_toi) + "\nexact:    ccd " + (exact ? "1" : "0") + ", toi " +
          toi_string(exact_toi) + "\nas a benchmark CSV (truth = the exact answer; replay with " +
-         "`exactccd check --kind " + (vf ? "vf" : "ee") + "`):\n" + benchmark_csv(r, exact);
+         "`exactccd check --kind " + std::string(Kind::short_name) + "`):\n" + benchmark_csv(r, exact);
 }
 
 /// The exponent spread above which the fuzzers skip a query (fuzz_input.hpp,
@@ -119,8 +114,7 @@ inline int max_exponent_spread() {
 /// violation print it to stderr and abort() (libFuzzer then saves the input).
 template <class Query>
 void fuzz_one(const std::uint8_t* data, std::size_t size) {
-  constexpr bool vf = std::is_same_v<Query, VertexFaceQuery>;
-  const Rows r = decode(data, size, vf);
+  const Rows r = decode<kinds::kind_of<Query>>(data, size);
   if (!all_finite(r) || exponent_spread(r) > max_exponent_spread()) return;
   if (const auto report = find_violation<Query>(r)) {
     std::fprintf(stderr, "\n==== %s", report->c_str());

@@ -135,30 +135,6 @@ void apply_edit(Rows& r, std::uint8_t op, std::uint8_t a, std::uint8_t b) {
   }
 }
 
-std::vector<const families::Family*> families_of_kind(bool vertex_face) {
-  std::vector<const families::Family*> out;
-  for (const families::Family& f : families::all_families())
-    if (f.vertex_face == vertex_face) out.push_back(&f);
-  return out;
-}
-
-const std::vector<Rows>& catalogue_rows(bool vertex_face) {
-  const auto convert = [](const auto& entries) {
-    std::vector<Rows> out;
-    for (const auto& e : entries) {
-      Rows r;
-      const auto q = rows(e.query);
-      for (std::size_t i = 0; i < 8; ++i) r[i] = {q[i].x.get_d(), q[i].y.get_d(), q[i].z.get_d()};
-      out.push_back(r);
-    }
-    return out;
-  };
-  // Immutable once built (thread-safe initialisation of function-local statics).
-  static const std::vector<Rows> vf = convert(catalogue::vertex_face_cases());
-  static const std::vector<Rows> ee = convert(catalogue::edge_edge_cases());
-  return vertex_face ? vf : ee;
-}
-
 int k_from_byte(std::uint8_t b) { return b < 192 ? b % 64 - 1 : 62 + (b - 191) * 16; }
 
 std::uint8_t byte_from_k(int k) {
@@ -182,7 +158,7 @@ Mode mode_of(const std::uint8_t* data, std::size_t size) {
   return size == 0 ? Mode::grid : static_cast<Mode>(data[0] % kModeCount);
 }
 
-Rows decode(const std::uint8_t* data, std::size_t size, bool vertex_face) {
+Rows decode(const std::uint8_t* data, std::size_t size, const KindSources& sources) {
   ByteReader in(data, size);
   Rows r{};
   switch (static_cast<Mode>(in.u8() % kModeCount)) {
@@ -200,9 +176,7 @@ Rows decode(const std::uint8_t* data, std::size_t size, bool vertex_face) {
       }
       break;
     case Mode::family: {
-      static const std::vector<const families::Family*> vf = families_of_kind(true);
-      static const std::vector<const families::Family*> ee = families_of_kind(false);
-      const auto& pool = vertex_face ? vf : ee;
+      const std::vector<const families::Family*>& pool = sources.families;
       const families::Family* f = pool[in.u8() % pool.size()];
       const int k = k_from_byte(in.u8());
       const std::uint8_t direction = in.u8();
@@ -217,7 +191,7 @@ Rows decode(const std::uint8_t* data, std::size_t size, bool vertex_face) {
       break;
     }
     case Mode::catalogue: {
-      const std::vector<Rows>& entries = catalogue_rows(vertex_face);
+      const std::vector<Rows>& entries = sources.catalogue;
       const std::size_t index = in.u8() | (static_cast<std::size_t>(in.u8()) << 8);
       r = entries[index % entries.size()];
       break;
@@ -315,15 +289,11 @@ std::vector<std::uint8_t> random_input(std::mt19937_64& rng, Mode mode) {
   return out;
 }
 
-std::string hex_rows(const Rows& r, bool vertex_face) {
-  static constexpr const char* kVf[8] = {"p_t0", "a_t0", "b_t0", "c_t0", "p_t1", "a_t1", "b_t1", "c_t1"};
-  static constexpr const char* kEe[8] = {"a0_t0", "a1_t0", "b0_t0", "b1_t0",
-                                         "a0_t1", "a1_t1", "b0_t1", "b1_t1"};
+std::string hex_rows(const Rows& r, const std::array<std::string, 8>& row_names) {
   std::string out;
   char line[160];
   for (std::size_t i = 0; i < 8; ++i) {
-    std::snprintf(line, sizeof line, "  %-5s %a %a %a\n", (vertex_face ? kVf : kEe)[i], r[i].x, r[i].y,
-                  r[i].z);
+    std::snprintf(line, sizeof line, "  %-5s %a %a %a\n", row_names[i].c_str(), r[i].x, r[i].y, r[i].z);
     out += line;
   }
   return out;

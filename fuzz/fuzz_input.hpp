@@ -29,9 +29,12 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "exactccd/types.hpp"
+#include "fuzz/catalogue.hpp"
 #include "fuzz/families.hpp"
 
 namespace exactccd::fuzzing {
@@ -48,9 +51,52 @@ constexpr int kModeCount = 4;
 /// A short name of a mode: "grid", "raw", "family", "catalogue".
 const char* mode_name(Mode m);
 
-/// Decodes fuzzer bytes into a query of the given kind. Every byte string decodes; the result
-/// may hold non-finite coordinates (an edit overflowed): callers skip those (all_finite).
-Rows decode(const std::uint8_t* data, std::size_t size, bool vertex_face);
+/// True for the kinds the decoder writes (kinds::VertexFace, kinds::EdgeEdge): a kind of lib/kinds
+/// whose queries are 8 points in 3D and which has a degenerate catalogue (catalogue::cases).
+template <class Kind, class = void>
+struct is_decodable : std::false_type {};
+template <class Kind>
+struct is_decodable<Kind, std::void_t<decltype(catalogue::cases(Kind{}))>>
+    : std::is_same<decltype(rows(std::declval<typename Kind::template Query<double>>())), Rows> {};
+/// See is_decodable.
+template <class Kind>
+constexpr bool is_decodable_v = is_decodable<Kind>::value;
+
+/// What decode() draws a kind's queries from: its families (family mode) and its catalogue
+/// entries as doubles (catalogue mode; every catalogue coordinate is a double).
+struct KindSources {
+  std::vector<const families::Family*> families;
+  std::vector<Rows> catalogue;
+};
+
+/// The sources of a kind (a description of lib/kinds with 8 rows per query:
+/// kinds::VertexFace, kinds::EdgeEdge), built once.
+template <class Kind>
+const KindSources& kind_sources() {
+  static_assert(is_decodable_v<Kind>, "the fuzz decoder writes 8-point 3D queries of kinds with a catalogue");
+  static const KindSources sources = [] {
+    KindSources s{families::families_of_kind<Kind>(), {}};
+    for (const auto& e : catalogue::cases(Kind{})) {
+      Rows r;
+      const auto q = rows(e.query);
+      for (std::size_t i = 0; i < 8; ++i) r[i] = {q[i].x.get_d(), q[i].y.get_d(), q[i].z.get_d()};
+      s.catalogue.push_back(r);
+    }
+    return s;
+  }();
+  return sources;
+}
+
+/// Decodes fuzzer bytes into a query drawing from a kind's sources. Every byte string decodes;
+/// the result may hold non-finite coordinates (an edit overflowed): callers skip those
+/// (all_finite).
+Rows decode(const std::uint8_t* data, std::size_t size, const KindSources& sources);
+
+/// Decodes fuzzer bytes into a query of the kind Kind (kinds::VertexFace, kinds::EdgeEdge).
+template <class Kind>
+Rows decode(const std::uint8_t* data, std::size_t size) {
+  return decode(data, size, kind_sources<Kind>());
+}
 
 /// The mode byte 0 selects (grid for an empty input).
 Mode mode_of(const std::uint8_t* data, std::size_t size);
@@ -84,9 +130,20 @@ void append_edit(std::vector<std::uint8_t>& bytes, std::uint8_t op, std::uint8_t
 /// (fuzz-against's plain random queries, decoded with decode()).
 std::vector<std::uint8_t> random_input(std::mt19937_64& rng, Mode mode);
 
-/// The query as 8 lines "x y z" of C99 hex floats (%a), exact and unambiguous, with the row
-/// names of the kind (p_t0 ... or a0_t0 ...).
-std::string hex_rows(const Rows& r, bool vertex_face);
+/// The query as 8 lines "x y z" of C99 hex floats (%a), exact and unambiguous, each named by
+/// `row_names`.
+std::string hex_rows(const Rows& r, const std::array<std::string, 8>& row_names);
+
+/// The query as hex floats with the row names of the kind Kind (its point names at t0, then
+/// at t1: p_t0 ... or a0_t0 ...).
+template <class Kind>
+std::string hex_rows(const Rows& r) {
+  static_assert(2 * Kind::points == 8, "8-point queries");
+  std::array<std::string, 8> names;
+  for (std::size_t i = 0; i < 8; ++i)
+    names[i] = std::string(Kind::point_names[i % Kind::points]) + (i < Kind::points ? "_t0" : "_t1");
+  return hex_rows(r, names);
+}
 
 /// The query as a benchmark CSV (8 rows, each double as an exact rational) with that truth.
 std::string benchmark_csv(const Rows& r, bool truth);

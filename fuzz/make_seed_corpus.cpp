@@ -1,5 +1,5 @@
-// Writes the fuzzers' seed corpus: OUT/vertex_face/ and OUT/edge_edge/, one small file per
-// seed (fuzz_input.hpp format):
+// Writes the fuzzers' seed corpus: OUT/vertex_face/ and OUT/edge_edge/ (each kind's function
+// stem, lib/kinds), one small file per seed (fuzz_input.hpp format):
 //   cat-NAME        every hand-derived catalogue case, bit-exact (raw mode);
 //   catcopy-I       catalogue mode: a few of the 2^996 / 2^-1060 / 2^20 / 2^40 copies;
 //   fam-NAME-K-DIR  family mode: every family of the kind, unperturbed and at k = 52,
@@ -37,8 +37,26 @@ void write(const fs::path& path, const Bytes& bytes) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
-template <class Entries>
-void write_kind(const fs::path& dir, bool vertex_face, const Entries& base, std::size_t all_count) {
+/// The reported stage-1 query (static triangle (0,0,0), (2^200,0,1), (0,2^-538,0), p crossing
+/// its plane inside at t = 1/2) and its edge-edge analogue (tests/test_wide_exponents.cpp).
+void write_reported(const fs::path& dir, kinds::VertexFace) {
+  const Vec3 a{0, 0, 0}, b{0x1p200, 0, 1}, c{0, 0x1p-538, 0};
+  write(dir / "wide-reported-stage1",
+        fuzzing::encode_raw({{{0x1p-360, 0x1p-539, 0}, a, b, c, {0x1p-360, 0x1p-539, 0x1p-559}, a, b, c}}));
+}
+void write_reported(const fs::path& dir, kinds::EdgeEdge) {
+  const Vec3 a0{0, 0, 0}, a1{0x1p200, 0, 1};
+  write(dir / "wide-reported-stage1-ee",
+        fuzzing::encode_raw({{a0, a1, {0x1p-360, -0x1p-539, 0}, {0x1p-360, 0x1p-539, 0}, a0, a1,
+                              {0x1p-360, -0x1p-539, 0x1p-559}, {0x1p-360, 0x1p-539, 0x1p-559}}}));
+}
+
+/// The seeds of one kind (a description of lib/kinds) in OUT/<its function stem>.
+template <class Kind>
+void write_kind(const fs::path& out, Kind kind) {
+  const fs::path dir = out / std::string(Kind::function);
+  const auto base = catalogue::base_cases(kind);
+  const std::size_t all_count = catalogue::cases(kind).size();
   fs::create_directories(dir);
   for (const auto& e : base) {
     fuzzing::Rows r;
@@ -52,8 +70,8 @@ void write_kind(const fs::path& dir, bool vertex_face, const Entries& base, std:
     write(dir / ("catcopy-" + std::to_string(index)), fuzzing::encode_catalogue(index));
   }
   std::size_t family_index = 0;
-  for (const families::Family& f : families::all_families()) {
-    if (f.vertex_face != vertex_face) continue;
+  for (const families::Family* family : families::families_of_kind<Kind>()) {
+    const families::Family& f = *family;
     for (int k : {families::kUnperturbed, 52})
       for (bool toward : {true, false}) {
         if (k == families::kUnperturbed && !toward) continue;  // the same configuration
@@ -70,18 +88,7 @@ void write_kind(const fs::path& dir, bool vertex_face, const Entries& base, std:
     }
     ++family_index;
   }
-  // The reported stage-1 query (static triangle (0,0,0), (2^200,0,1), (0,2^-538,0), p crossing
-  // its plane inside at t = 1/2) and its edge-edge analogue (tests/test_wide_exponents.cpp).
-  if (vertex_face) {
-    const Vec3 a{0, 0, 0}, b{0x1p200, 0, 1}, c{0, 0x1p-538, 0};
-    write(dir / "wide-reported-stage1",
-          fuzzing::encode_raw({{{0x1p-360, 0x1p-539, 0}, a, b, c, {0x1p-360, 0x1p-539, 0x1p-559}, a, b, c}}));
-  } else {
-    const Vec3 a0{0, 0, 0}, a1{0x1p200, 0, 1};
-    write(dir / "wide-reported-stage1-ee",
-          fuzzing::encode_raw({{a0, a1, {0x1p-360, -0x1p-539, 0}, {0x1p-360, 0x1p-539, 0}, a0, a1,
-                                {0x1p-360, -0x1p-539, 0x1p-559}, {0x1p-360, 0x1p-539, 0x1p-559}}}));
-  }
+  write_reported(dir, kind);
   // Grid mode, scale byte 0 (2^0): a unit-ish configuration with degenerate edits.
   Bytes grid{static_cast<std::uint8_t>(fuzzing::Mode::grid), 0};
   for (int c = 0; c < 24; ++c) grid.push_back(static_cast<std::uint8_t>((c * 5 + 3) % 17));
@@ -118,9 +125,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path out = argv[1];
-  write_kind(out / "vertex_face", true, catalogue::vertex_face_base_cases(),
-             catalogue::vertex_face_cases().size());
-  write_kind(out / "edge_edge", false, catalogue::edge_edge_base_cases(),
-             catalogue::edge_edge_cases().size());
+  // The kinds the fuzzers cover (fuzz_vertex_face, fuzz_edge_edge).
+  write_kind(out, kinds::VertexFace{});
+  write_kind(out, kinds::EdgeEdge{});
   return 0;
 }

@@ -225,7 +225,7 @@ const std::vector<Query>& all_queries() {
               for (std::size_t i = 0; i < 8; ++i) r[i] = {d[i].x, d[i].y, d[i].z};
               out.push_back({f.name + " wide " + families::wide_style_name(static_cast<families::WideStyle>(style)) +
                                  " k=" + std::to_string(k) + (toward ? " toward" : " away"),
-                             f.vertex_face, r, d});
+                             std::is_same_v<std::decay_t<decltype(q)>, VertexFaceQuery>, r, d});
             }, inst->query);
           }
     return out;

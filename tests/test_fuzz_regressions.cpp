@@ -28,14 +28,16 @@ std::vector<std::uint8_t> read_bytes(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+/// The committed seeds of the kind of Query (fuzz/corpus/<the kind's function stem>).
 template <class Query>
-void check_corpus(const char* kind) {
-  const fs::path dir = fs::path(EXACTCCD_SOURCE_DIR) / "fuzz" / "corpus" / kind;
+void check_corpus() {
+  using Kind = kinds::kind_of<Query>;
+  const fs::path dir = fs::path(EXACTCCD_SOURCE_DIR) / "fuzz" / "corpus" / std::string(Kind::function);
   ASSERT_TRUE(fs::is_directory(dir)) << dir;
   std::size_t checked = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::vector<std::uint8_t> bytes = read_bytes(entry.path());
-    const Rows r = fuzzing::decode(bytes.data(), bytes.size(), std::is_same_v<Query, VertexFaceQuery>);
+    const Rows r = fuzzing::decode<Kind>(bytes.data(), bytes.size());
     if (!fuzzing::all_finite(r)) continue;
     const auto violation = fuzzing::find_violation<Query>(r);
     EXPECT_FALSE(violation) << entry.path().filename() << "\n" << violation.value_or("");
@@ -44,8 +46,8 @@ void check_corpus(const char* kind) {
   EXPECT_GE(checked, 40u);
 }
 
-TEST(FuzzCorpus, VertexFaceSeedsSatisfyTheProperty) { check_corpus<VertexFaceQuery>("vertex_face"); }
-TEST(FuzzCorpus, EdgeEdgeSeedsSatisfyTheProperty) { check_corpus<EdgeEdgeQuery>("edge_edge"); }
+TEST(FuzzCorpus, VertexFaceSeedsSatisfyTheProperty) { check_corpus<VertexFaceQuery>(); }
+TEST(FuzzCorpus, EdgeEdgeSeedsSatisfyTheProperty) { check_corpus<EdgeEdgeQuery>(); }
 
 /// Queries an earlier version answered wrongly (found by the fuzzers, minimized, or by the
 /// wide-exponent families), with what failed: the 8 points in benchmark row order (hex floats,
@@ -255,7 +257,7 @@ TEST(FuzzInput, RawModeRoundTripsEveryDouble) {
                    {12, 13, 14}}};
   const auto bytes = fuzzing::encode_raw(r);
   EXPECT_EQ(fuzzing::mode_of(bytes.data(), bytes.size()), fuzzing::Mode::raw);
-  const Rows back = fuzzing::decode(bytes.data(), bytes.size(), true);
+  const Rows back = fuzzing::decode<kinds::VertexFace>(bytes.data(), bytes.size());
   for (std::size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(std::memcmp(&back[i], &r[i], sizeof(Vec3)), 0) << "point " << i;  // -0.0 too
   }
@@ -263,15 +265,14 @@ TEST(FuzzInput, RawModeRoundTripsEveryDouble) {
 
 TEST(FuzzInput, FamilyModeIsTheFamilysInstance) {
   std::size_t index = 0;
-  for (const families::Family& f : families::all_families()) {
-    if (!f.vertex_face) continue;
+  for (const families::Family* f : families::families_of_kind<kinds::VertexFace>()) {
     for (int k : {families::kUnperturbed, 0, 30, 62}) {
       const auto bytes = fuzzing::encode_family(index, k, true, 99);
-      const Rows got = fuzzing::decode(bytes.data(), bytes.size(), true);
+      const Rows got = fuzzing::decode<kinds::VertexFace>(bytes.data(), bytes.size());
       std::mt19937_64 rng(99);
-      const auto inst = f.make(k, true, rng);
+      const auto inst = f->make(k, true, rng);
       const Rows want = rows(std::get<VertexFaceQuery>(inst.query));
-      EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << f.name << " k " << k;
+      EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << f->name << " k " << k;
     }
     ++index;
   }
@@ -280,17 +281,16 @@ TEST(FuzzInput, FamilyModeIsTheFamilysInstance) {
 TEST(FuzzInput, FamilyModeWidePlacementIsMakeWide) {
   std::size_t index = 0;
   int wide = 0;
-  for (const families::Family& f : families::all_families()) {
-    if (f.vertex_face) continue;
+  for (const families::Family* f : families::families_of_kind<kinds::EdgeEdge>()) {
     for (int s = 0; s < families::kWideStyleCount; ++s) {
       const auto style = static_cast<families::WideStyle>(s);
       const auto bytes = fuzzing::encode_family(index, 8, true, 77, style);
-      const Rows got = fuzzing::decode(bytes.data(), bytes.size(), false);
+      const Rows got = fuzzing::decode<kinds::EdgeEdge>(bytes.data(), bytes.size());
       std::mt19937_64 rng(77);
-      const auto inst = families::make_wide(f, 8, true, style, rng);
-      ASSERT_TRUE(inst.has_value()) << f.name << " " << families::wide_style_name(style);
+      const auto inst = families::make_wide(*f, 8, true, style, rng);
+      ASSERT_TRUE(inst.has_value()) << f->name << " " << families::wide_style_name(style);
       const Rows want = rows(std::get<EdgeEdgeQuery>(inst->query));
-      EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << f.name << " " << families::wide_style_name(style);
+      EXPECT_EQ(std::memcmp(&got, &want, sizeof got), 0) << f->name << " " << families::wide_style_name(style);
       wide += fuzzing::exponent_spread(got) > 1000;
     }
     ++index;
@@ -302,7 +302,7 @@ TEST(FuzzInput, CatalogueModeIsTheEntry) {
   const auto cases = catalogue::edge_edge_cases();
   for (std::size_t i : {std::size_t{0}, cases.size() / 2, cases.size() - 1}) {
     const auto bytes = fuzzing::encode_catalogue(i);
-    const Rows got = fuzzing::decode(bytes.data(), bytes.size(), false);
+    const Rows got = fuzzing::decode<kinds::EdgeEdge>(bytes.data(), bytes.size());
     const auto want = rows(cases[i].query);
     for (std::size_t p = 0; p < 8; ++p) {
       EXPECT_EQ(got[p].x, want[p].x.get_d());
@@ -318,9 +318,9 @@ TEST(FuzzInput, EditsBuildDegeneracies) {
   auto edited = [&](std::uint8_t op, std::uint8_t a, std::uint8_t b) {
     auto e = bytes;
     fuzzing::append_edit(e, op, a, b);
-    return fuzzing::decode(e.data(), e.size(), true);
+    return fuzzing::decode<kinds::VertexFace>(e.data(), e.size());
   };
-  const Rows base = fuzzing::decode(bytes.data(), bytes.size(), true);
+  const Rows base = fuzzing::decode<kinds::VertexFace>(bytes.data(), bytes.size());
   const Rows shared = edited(0, 1, 0);  // point 0 := point 1
   EXPECT_EQ(shared[0].x, base[1].x);
   EXPECT_EQ(shared[0].z, base[1].z);
@@ -345,7 +345,9 @@ TEST(FuzzInput, EveryInputDecodesAndRandomInputsAreFinite) {
   for (int i = 0; i < 2000; ++i) {
     std::vector<std::uint8_t> junk(static_cast<std::size_t>(rng() % 300));
     for (auto& b : junk) b = static_cast<std::uint8_t>(rng());
-    (void)fuzzing::decode(junk.data(), junk.size(), i % 2 == 0);  // never throws or crashes
+    // Never throws or crashes, for either kind.
+    (void)(i % 2 == 0 ? fuzzing::decode<kinds::VertexFace>(junk.data(), junk.size())
+                      : fuzzing::decode<kinds::EdgeEdge>(junk.data(), junk.size()));
   }
   for (int m = 0; m < fuzzing::kModeCount; ++m) {
     const auto bytes = fuzzing::random_input(rng, static_cast<fuzzing::Mode>(m));

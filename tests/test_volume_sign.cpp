@@ -12,6 +12,7 @@
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
 #include "filter/volume_sign.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd {
 namespace {
@@ -39,10 +40,14 @@ struct Counts {
   int checked = 0, decided = 0, near_root = 0, decided_near_root = 0;
 };
 
-void check(const Rows& r, bool vertex_face, double t, Counts& counts, bool near_root) {
-  const int fast = vertex_face ? filter::certified_volume_sign(from_rows<VertexFaceQuery>(r), t)
-                               : filter::certified_volume_sign(from_rows<EdgeEdgeQuery>(r), t);
-  const int exact = vertex_face ? exact_volume_sign(r, 1, 2, 3, 0, t) : exact_volume_sign(r, 0, 1, 2, 3, t);
+/// The certified sign of V(t) of a query against the exact one (V's rows from the kind's
+/// description).
+template <class Query>
+void check(const Query& q, double t, Counts& counts, bool near_root) {
+  using Kind = kinds::kind_of<Query>;
+  const int fast = filter::certified_volume_sign(q, t);
+  const auto& v = Kind::volume_rows;
+  const int exact = exact_volume_sign(rows(q), v[0], v[1], v[2], v[3], t);
   ++counts.checked;
   // Next to a root the filter is meant to decide, except where V(t) is exactly zero (never
   // certified) or t is subnormal (next to a root at 0: |V(t)| ~ 2^-1074, below the bound).
@@ -51,7 +56,7 @@ void check(const Rows& r, bool vertex_face, double t, Counts& counts, bool near_
   if (fast == contact::kUnknownSign) return;
   ++counts.decided;
   counts.decided_near_root += counted;
-  ASSERT_EQ(fast, exact) << (vertex_face ? "vertex-face" : "edge-edge") << " at t = " << std::hexfloat << t;
+  ASSERT_EQ(fast, exact) << Kind::name << " at t = " << std::hexfloat << t;
 }
 
 TEST(VolumeSign, CertifiedSignsAreExactAndDecisiveNextToRoots) {
@@ -69,16 +74,18 @@ TEST(VolumeSign, CertifiedSignsAreExactAndDecisiveNextToRoots) {
       r[k + 4] = {r[k].x + 0.5 * unit(rng), r[k].y + 0.5 * unit(rng), r[k].z + 0.5 * unit(rng)};
     }
     if (i % 5 == 0) r[6] = r[2], r[2] = r[1];  // shared and static points
-    for (int j = 0; j < 4; ++j) check(r, vertex_face, std::ldexp(static_cast<double>(rng() >> 11), -53), counts, false);
-    check(r, vertex_face, 0.0, counts, false);
-    check(r, vertex_face, 1.0, counts, false);
-    // Next to the exact TOI (an exact root of V): the doubles just below and above it.
-    const auto toi = vertex_face ? vertex_face_toi(from_rows<VertexFaceQuery>(r), Method::exact)
-                                 : edge_edge_toi(from_rows<EdgeEdgeQuery>(r), Method::exact);
-    if (!toi) continue;
-    ++collisions;
-    for (double t : {toi->lo, toi->hi, std::nextafter(toi->lo, -1.0), std::nextafter(toi->hi, 2.0)})
-      if (t >= 0 && t <= 1) check(r, vertex_face, t, counts, true);
+    const auto run = [&](const auto& q) {
+      for (int j = 0; j < 4; ++j) check(q, std::ldexp(static_cast<double>(rng() >> 11), -53), counts, false);
+      check(q, 0.0, counts, false);
+      check(q, 1.0, counts, false);
+      // Next to the exact TOI (an exact root of V): the doubles just below and above it.
+      const auto toi = exactccd::toi(q, Method::exact);
+      if (!toi) return;
+      ++collisions;
+      for (double t : {toi->lo, toi->hi, std::nextafter(toi->lo, -1.0), std::nextafter(toi->hi, 2.0)})
+        if (t >= 0 && t <= 1) check(q, t, counts, true);
+    };
+    if (vertex_face) run(from_rows<VertexFaceQuery>(r)); else run(from_rows<EdgeEdgeQuery>(r));
   }
   ASSERT_GT(collisions, 300);
   // Decisive almost everywhere (the point of the filter); measured: see the output.

@@ -16,6 +16,7 @@
 
 #include "contact/contact_polynomials.hpp"
 #include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::baseline {
 
@@ -103,17 +104,18 @@ int cubic_roots_in(const T& a, const T& b, const T& c, const T& d, const T& lo, 
 
 /// The textbook cubic V(t) = (x2 - x1) . ((x3 - x1) x (x4 - x1)), each point moving as
 /// x(t) = x_t0 + t (x_t1 - x_t0) and the products expanded in t (relative positions and
-/// relative velocities), as the lecture-note derivation computes it. Points in the order of
-/// contact_polynomials.hpp's V: vertex-face a, b, c, p; edge-edge a0, a1, b0, b1. (The exact
-/// methods build V from relative displacements instead; see docs/design.md, section 2.)
-template <class T>
-contact::Poly<T, 3> textbook_volume(const std::array<Vec3T<T>, 8>& x, bool vertex_face) {
+/// relative velocities), as the lecture-note derivation computes it. Points x1..x4 are the
+/// kind's volume rows (kinds::VertexFace::volume_rows: a, b, c, p; edge-edge a0, a1, b0, b1),
+/// as in contact_polynomials.hpp's V. (The exact methods build V from relative displacements
+/// instead; see docs/design.md, section 2.)
+template <class Kind, class T>
+contact::Poly<T, 3> textbook_volume(const std::array<Vec3T<T>, 8>& x) {
   const auto motion = [&x](int i) {
     return contact::PolyVec3<T, 1>{contact::linear_motion(x[i].x, x[i + 4].x),
                                    contact::linear_motion(x[i].y, x[i + 4].y),
                                    contact::linear_motion(x[i].z, x[i + 4].z)};
   };
-  const std::array<int, 4> order = vertex_face ? std::array<int, 4>{1, 2, 3, 0} : std::array<int, 4>{0, 1, 2, 3};
+  constexpr std::array<int, 4> order = Kind::volume_rows;
   const auto x1 = motion(order[0]), x2 = motion(order[1]), x3 = motion(order[2]), x4 = motion(order[3]);
   return contact::dot(x2 - x1, contact::cross(x3 - x1, x4 - x1));
 }
@@ -124,7 +126,7 @@ std::optional<double> naive_toi(const Query& q, double eps, Inside&& inside) {
   std::array<Vec3T<T>, 8> x;
   const auto r = rows(q);
   for (int i = 0; i < 8; ++i) x[i] = to_number<T>(r[i]);
-  const auto volume = textbook_volume(x, std::is_same_v<Query, VertexFaceQuery>);
+  const auto volume = textbook_volume<kinds::kind_of<Query>>(x);
   const T& c0 = volume.c[0];
   const T& c1 = volume.c[1];
   const T& c2 = volume.c[2];

@@ -137,13 +137,12 @@ struct Groups {
   std::size_t random_instance = 0, random_first = 0;  ///< random_first + mode: fuzz decoder modes
 };
 
-Groups make_groups(bool vertex_face) {
+/// The groups of kind Kind (a description of lib/kinds).
+template <class Kind>
+Groups make_groups() {
   Groups g;
-  for (const families::Family& f : families::all_families())
-    if (f.vertex_face == vertex_face) {
-      g.families.push_back(&f);
-      g.names.push_back(f.name);
-    }
+  g.families = families::families_of_kind<Kind>();
+  for (const families::Family* f : g.families) g.names.push_back(f->name);
   g.random_instance = g.names.size();
   g.names.push_back("random_instance");
   g.random_first = g.names.size();
@@ -166,7 +165,8 @@ Rows family_rows(const families::Family& f, int k, bool toward, std::uint64_t pl
   return r;
 }
 
-Generated generate(std::size_t i, std::uint64_t seed, bool vertex_face, const Groups& g) {
+template <class Kind>
+Generated generate(std::size_t i, std::uint64_t seed, const Groups& g) {
   Generated out;
   if (i % 2 == 0) {
     const std::size_t cells = g.families.size() * kKCount * 2;
@@ -179,7 +179,7 @@ Generated generate(std::size_t i, std::uint64_t seed, bool vertex_face, const Gr
     out.rows = family_rows(*out.family, out.k, out.toward, out.placement_seed);
   } else if (i % 4 == 1) {
     std::mt19937_64 rng = query_rng(seed, i, 1);
-    const families::Instance inst = families::random_instance(rng, vertex_face);
+    const families::Instance inst = families::random_instance<Kind>(rng);
     std::visit([&out](const auto& q) { out.rows = rows(q); }, inst.query);
     out.group = g.random_instance;
   } else {
@@ -187,7 +187,7 @@ Generated generate(std::size_t i, std::uint64_t seed, bool vertex_face, const Gr
     const auto mode = static_cast<fuzzing::Mode>((i / 4) % fuzzing::kModeCount);
     do {  // an edit may overflow; draw again (the unedited payloads are finite)
       const std::vector<std::uint8_t> bytes = fuzzing::random_input(rng, mode);
-      out.rows = fuzzing::decode(bytes.data(), bytes.size(), vertex_face);
+      out.rows = fuzzing::decode<Kind>(bytes.data(), bytes.size());
     } while (!fuzzing::all_finite(out.rows));
     out.group = g.random_first + static_cast<std::size_t>(mode);
   }
@@ -196,17 +196,17 @@ Generated generate(std::size_t i, std::uint64_t seed, bool vertex_face, const Gr
 
 /// The truth: the exact reference path (Method::exact), independent of the filtered front end
 /// that the libFuzzer targets check against it.
-bool exact_answer(const Rows& r, bool vertex_face) {
-  return vertex_face ? vertex_face_ccd(from_rows<VertexFaceQuery>(r), Method::exact)
-                     : edge_edge_ccd(from_rows<EdgeEdgeQuery>(r), Method::exact);
+template <class Kind>
+bool exact_answer(const Rows& r) {
+  return ccd(from_rows<typename Kind::template Query<double>>(r), Method::exact);
 }
 
 /// The exact degeneracy categories of a query, joined by '+' (as `exactccd compare` prints).
-std::string degeneracy_labels(const Rows& r, bool vertex_face) {
+template <class Kind>
+std::string degeneracy_labels(const Rows& r) {
   std::array<RationalVec3, 8> q;
   for (std::size_t i = 0; i < 8; ++i) q[i] = {mpq_class(r[i].x), mpq_class(r[i].y), mpq_class(r[i].z)};
-  return exact::join_categories(vertex_face ? exact::degeneracy_categories(from_rows<RationalVertexFaceQuery>(q))
-                                            : exact::degeneracy_categories(from_rows<RationalEdgeEdgeQuery>(q)));
+  return exact::join_categories(exact::degeneracy_categories(from_rows<typename Kind::template Query<mpq_class>>(q)));
 }
 
 /// The outcome of one query.
@@ -288,9 +288,10 @@ int simplify_coordinates(Rows& r, const std::function<bool(const Rows&)>& still_
   return static_cast<int>(changed.size());
 }
 
-void shrink(const Generated& q, Outcome& o, const Plugin& plugin, bool vertex_face) {
+template <class Kind>
+void shrink(const Generated& q, Outcome& o, const Plugin& plugin) {
   const int theirs = o.theirs;
-  const auto still = [&](const Rows& r) { return plugin(r) == theirs && exact_answer(r, vertex_face) != (theirs == 1); };
+  const auto still = [&](const Rows& r) { return plugin(r) == theirs && exact_answer<Kind>(r) != (theirs == 1); };
   if (q.family) {
     std::set<int> failing;
     for (int k = kKMin; k <= kKMax; ++k)
@@ -302,10 +303,10 @@ void shrink(const Generated& q, Outcome& o, const Plugin& plugin, bool vertex_fa
   } else {
     // Keeping the exact degeneracy categories stops the shrinking from sliding into another,
     // simpler failure (e.g. every point at the origin) instead of minimising this one.
-    const std::string categories = degeneracy_labels(q.rows, vertex_face);
+    const std::string categories = degeneracy_labels<Kind>(q.rows);
     o.shrunk = q.rows;
     const int n = simplify_coordinates(o.shrunk, still, [&](const Rows& r) {
-      return degeneracy_labels(r, vertex_face) == categories;
+      return degeneracy_labels<Kind>(r) == categories;
     });
     o.note = "shrunk: " + std::to_string(n) + " of 24 coordinates simplified, categories kept: " + categories;
   }
@@ -350,44 +351,41 @@ const CommandSpec& command() {
   return spec;
 }
 
-}  // namespace
+/// The settings of a run.
+struct Run {
+  std::string plugin_path;
+  std::size_t queries = 0;
+  std::uint64_t seed = 0;
+  std::string out_dir;
+  unsigned threads = 1;
+  bool shrinking = true;
+};
 
-int run_fuzz_against(int argc, char** argv) {
-  const ParsedOptions options = parse_options(command(), argc, argv);
-  if (options.help()) {
-    std::cout << help_text(command());
-    return kExitOk;
-  }
-  const std::optional<QueryKind> kind = kind_of(options);
-  const auto queries = static_cast<std::size_t>(options.integer("--queries"));
-  const std::uint64_t seed = options.unsigned64("--seed");
-  const std::string out_dir = options.text("--out");
-  const auto threads = static_cast<unsigned>(options.integer("--threads"));
-  const bool shrinking = !options.flag("--no-shrink");
-  if (options.positionals().empty()) throw UsageError("fuzz-against: no plug-in (see exactccd fuzz-against --help)");
-  if (options.positionals().size() > 1)
-    throw UsageError("fuzz-against: one plug-in at a time ('" + options.positionals()[0] + "' and '" +
-                     options.positionals()[1] + "')");
-  const std::string plugin_path = options.positionals()[0];
-
-  const Plugin plugin(plugin_path, *kind);
-  const bool vf = *kind == query_kind<kinds::VertexFace>();  // the fuzz decoder's kind flag
-  const std::string kind_suffix = kind_long_name(*kind);
+/// A run on queries of the kind Kind (a description of lib/kinds the fuzz decoder writes).
+template <class Kind>
+int fuzz_kind(const Run& run) {
+  const std::string& plugin_path = run.plugin_path;
+  const std::size_t queries = run.queries;
+  const std::uint64_t seed = run.seed;
+  const std::string& out_dir = run.out_dir;
+  const std::string kind_suffix(Kind::name);
+  const std::string kind_short(Kind::short_name);
+  const Plugin plugin(plugin_path, query_kind<Kind>());
   prepare_output_directory(out_dir);
 
-  const Groups groups = make_groups(vf);
+  const Groups groups = make_groups<Kind>();
   std::vector<Generated> generated(queries);
   std::vector<Outcome> outcomes(queries);
   const double start = now_seconds();
-  parallel_for(0, queries, threads, [&](std::size_t i) {
+  parallel_for(0, queries, run.threads, [&](std::size_t i) {
     Generated& q = generated[i];
-    q = generate(i, seed, vf, groups);
+    q = generate<Kind>(i, seed, groups);
     Outcome& o = outcomes[i];
-    o.truth = exact_answer(q.rows, vf);
+    o.truth = exact_answer<Kind>(q.rows);
     o.theirs = plugin(q.rows);
     if (!o.disagrees()) return;
-    if (shrinking) {
-      shrink(q, o, plugin, vf);
+    if (run.shrinking) {
+      shrink<Kind>(q, o, plugin);
     } else {
       o.shrunk = q.rows;
       o.note = "not shrunk";
@@ -449,22 +447,53 @@ int run_fuzz_against(int argc, char** argv) {
     all.truth.push_back(o.truth);
     index += name + "  " + type + "  " + groups.names[q.group];
     if (q.family) index += " k " + std::to_string(q.k) + (q.toward ? " toward" : " away");
-    index += "  " + o.note + "\n" + fuzzing::hex_rows(o.shrunk, vf);
+    index += "  " + o.note + "\n" + fuzzing::hex_rows<Kind>(o.shrunk);
   }
   std::ostringstream csv;
   io::write_benchmark_csv(csv, all);
   write_atomically(fs::path(out_dir) / ("disagreements-" + kind_suffix + ".csv"), csv.str());
   write_atomically(fs::path(out_dir) / ("disagreements-" + kind_suffix + ".txt"),
-                   "# exactccd fuzz-against " + plugin_path + " --kind " + kind_name(*kind) + " --queries " +
+                   "# exactccd fuzz-against " + plugin_path + " --kind " + kind_short + " --queries " +
                        std::to_string(queries) + " --seed " + std::to_string(seed) +
                        ": one line per disagreement (file, FP/FN, group, shrinking), then the shrunk query "
                        "in hex floats; the rows of disagreements-" + kind_suffix + ".csv in order\n" + index);
   std::printf("\n%zu disagreements (FP %zu, FN %zu)%s, written to %s: one CSV each, all in "
               "disagreements-%s.csv, described in disagreements-%s.txt\n"
               "replay: exactccd check --kind %s %s/disagreements-%s.csv\n",
-              files, total.fp, total.fn, shrinking ? ", shrunk" : "", out_dir.c_str(), kind_suffix.c_str(),
-              kind_suffix.c_str(), kind_name(*kind).c_str(), out_dir.c_str(), kind_suffix.c_str());
+              files, total.fp, total.fn, run.shrinking ? ", shrunk" : "", out_dir.c_str(), kind_suffix.c_str(),
+              kind_suffix.c_str(), kind_short.c_str(), out_dir.c_str(), kind_suffix.c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+int run_fuzz_against(int argc, char** argv) {
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
+  }
+  const std::optional<QueryKind> kind = kind_of(options);
+  const auto queries = static_cast<std::size_t>(options.integer("--queries"));
+  const std::uint64_t seed = options.unsigned64("--seed");
+  const std::string out_dir = options.text("--out");
+  const auto threads = static_cast<unsigned>(options.integer("--threads"));
+  const bool shrinking = !options.flag("--no-shrink");
+  if (options.positionals().empty()) throw UsageError("fuzz-against: no plug-in (see exactccd fuzz-against --help)");
+  if (options.positionals().size() > 1)
+    throw UsageError("fuzz-against: one plug-in at a time ('" + options.positionals()[0] + "' and '" +
+                     options.positionals()[1] + "')");
+  const Run run{options.positionals()[0], queries, seed, out_dir, threads, shrinking};
+  return visit_kind(*kind, [&](auto k) {
+    using Kind = decltype(k);
+    if constexpr (fuzzing::is_decodable_v<Kind>) {
+      return fuzz_kind<Kind>(run);
+    } else {
+      throw UsageError("fuzz-against: --kind " + std::string(Kind::short_name) +
+                       " is not supported (the fuzz decoder writes vertex-face and edge-edge queries)");
+      return static_cast<int>(kExitUsage);
+    }
+  });
 }
 
 }  // namespace exactccd::cli

@@ -2,8 +2,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 
 #include "cli_common.hpp"
@@ -191,8 +193,8 @@ int run_generate(int argc, char** argv) {
     return kExitOk;
   }
   if (what == "families") {
-    io::BenchmarkQueries vf, ee;
-    std::size_t constructed = 0;
+    std::map<std::string_view, io::BenchmarkQueries> by_kind;  // by the kind's name
+    std::size_t constructed = 0, total = 0;
     std::mt19937_64 rng(seed);
     for (const families::Family& f : families::all_families())
       for (int k = families::kUnperturbed; k <= 60; k = (k < 0 ? 0 : k + k_step))
@@ -201,10 +203,11 @@ int run_generate(int argc, char** argv) {
           const std::string where = f.name + " k=" + std::to_string(k) + (toward ? " toward" : " away") +
                                     " instance " + std::to_string(i / 2);
           const auto add = [&](const families::Instance& inst, const std::string& placement) {
-            (f.vertex_face ? vf : ee).truth.push_back(family_truth(inst, where + placement));
-            (f.vertex_face ? vf : ee).rows.push_back(
-                std::visit([](const auto& q) { return rational_rows(q); }, inst.query));
+            io::BenchmarkQueries& queries = by_kind[f.kind];
+            queries.truth.push_back(family_truth(inst, where + placement));
+            queries.rows.push_back(std::visit([](const auto& q) { return rational_rows(q); }, inst.query));
             constructed += inst.expected.has_value();
+            ++total;
           };
           if (!wide) {
             add(f.make(k, toward, rng), "");
@@ -217,11 +220,13 @@ int run_generate(int argc, char** argv) {
           }
         }
     prepare_output_directory(out);
-    const std::string note = " (truth: " + std::to_string(constructed) + " of " + std::to_string(vf.size() + ee.size()) +
+    const std::string note = " (truth: " + std::to_string(constructed) + " of " + std::to_string(total) +
                              " by construction, checked against Method::exact; the others by Method::exact)";
     const std::string prefix = wide ? "families-wide-" : "families-";
-    write_atomically(fs::path(out) / (prefix + "vertex-face.csv"), vf, note);
-    write_atomically(fs::path(out) / (prefix + "edge-edge.csv"), ee, note);
+    for (QueryKind k : all_kinds()) {  // one file per kind that has families, named by the kind
+      const auto it = by_kind.find(kind_long_name(k));
+      if (it != by_kind.end()) write_atomically(fs::path(out) / (prefix + std::string(it->first) + ".csv"), it->second, note);
+    }
     return kExitOk;
   }
   if (scene_name.empty()) throw UsageError("generate sim: --scene cloth|strip|fold|pile is required");

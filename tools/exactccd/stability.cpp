@@ -137,7 +137,7 @@ int run_stability(int argc, char** argv) {
     const auto& [family, k] = tasks[t];
     const Cell& c = cells[t];
     for (std::size_t m = 0; m < methods.size(); ++m)
-      out << family->name << ',' << (family->vertex_face ? "vf" : "ee") << ',' << method_name(methods[m])
+      out << family->name << ',' << kind_name(parse_kind(std::string(family->kind))) << ',' << method_name(methods[m])
           << ',' << k << ',' << c.queries << ',' << c.fp[m] << ',' << c.fn[m] << ','
           << static_cast<double>(c.fp[m]) / c.queries << ',' << static_cast<double>(c.fn[m]) / c.queries
           << '\n';
