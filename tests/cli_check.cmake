@@ -308,7 +308,54 @@ elseif(CASE STREQUAL "families_wide")
     endforeach()
   endforeach()
 
+elseif(CASE STREQUAL "check_separation")
+  # Hand-derived (tests/data/separation-*.csv): point-point, p still at the origin, q moving
+  # along x: (2 -> 0): |pq| = 2 - 2t <= 1/2 from t = 3/4; (3 -> 0): 3 - 3t <= 1/2 from t = 5/6
+  # (between the doubles 0.83333333333333326 and 0.83333333333333337); q still at distance 3:
+  # never. With --tmax 1/2 nothing collides; at d = 0 the moving q reaches p at t = 1.
+  set(pp ${DATA}/separation-point-point.csv)
+  run(check --kind pp --min-distance 0.5 --toi --answers ${pp})
+  set(expected "1 0.75 0.75\n0\n1 0.83333333333333326 0.83333333333333337\n")
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL expected)
+    message(FATAL_ERROR "check --kind pp --min-distance 0.5 --toi --answers: exit ${rc}, printed '${out}'\n${err}")
+  endif()
+  run(check --kind pp --min-distance 0.5 --tmax 0.5 --toi --answers ${pp})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "0\n0\n0\n")
+    message(FATAL_ERROR "check --tmax 0.5: exit ${rc}, printed '${out}'\n${err}")
+  endif()
+  run(check --kind pp --toi --answers --method exact ${pp})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "1 1 1\n0\n1 1 1\n")
+    message(FATAL_ERROR "check --kind pp at d = 0: exit ${rc}, printed '${out}'\n${err}")
+  endif()
+  # The truth column is the d = 1/2 question's: the table finds no FP and no FN.
+  run(check --kind pp --min-distance 0.5 --json ${pp})
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "\"queries\": 3, \"positives\": 2, \"fp\": 0, \"fn\": 0")
+    message(FATAL_ERROR "check --json at d = 0.5: exit ${rc}, printed '${out}'\n${err}")
+  endif()
+  # 2D point-edge (kind inferred from the name): p falls from (0, 1) to (0, -1) through the
+  # still edge [(-1, 0), (1, 0)]: distance 1 - 2t <= 1/4 from t = 3/8.
+  run(check --min-distance 0.25 --toi --answers ${DATA}/separation-point-edge-2d.csv)
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL "1 0.375 0.375\n")
+    message(FATAL_ERROR "check point-edge-2d: exit ${rc}, printed '${out}'\n${err}")
+  endif()
+  # The baselines answer only vf and ee at d = 0; bad numbers are usage errors.
+  run(check --kind pp --method naive ${pp})
+  expect_error(2 "check --kind pp --method naive")
+  run(check --min-distance 0.001 --method naive ${small})
+  expect_error(2 "check --min-distance with a baseline")
+  foreach(bad "--min-distance;-1" "--min-distance;nan" "--tmax;0" "--tmax;1.5" "--tmax;x")
+    run(check --kind pp ${bad} ${pp})
+    expect_error(2 "check ${bad}")
+  endforeach()
+  # A 2D file read as 3D has the wrong number of columns: file:line.
+  run(check --kind pe ${DATA}/separation-point-edge-2d.csv)
+  expect_error(2 "2D file as pe")
+  if(NOT err MATCHES "separation-point-edge-2d.csv:1: expected 7 comma-separated integers")
+    message(FATAL_ERROR "2D file as pe: stderr '${err}'")
+  endif()
+
 else()
   message(FATAL_ERROR "cli_check.cmake: unknown CASE '${CASE}'")
 endif()
 file(REMOVE_RECURSE ${WORK})
+
