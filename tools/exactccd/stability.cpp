@@ -34,7 +34,11 @@ const CommandSpec& command() {
         "methods' own rows are a check, not a tautology):\n"
         "  family,kind,method,k,queries,fp,fn,fp_rate,fn_rate\n"
         "Instances alternate between the two directions; each is seeded from (seed, family, k, i), so\n"
-        "a run is reproducible and independent of --threads.\n";
+        "a run is reproducible and independent of --threads.\n"
+        "\n"
+        "With --min-distance D (or --tmax T) every instance asks the separation question instead (within\n"
+        "distance D at some t in [0, T]); the reference is then Method::exact at that question (the\n"
+        "families' constructed answers are the contact question's), and only the exact methods answer.\n";
     c.options = {
         text_option("--families", "LIST", "all", "comma-separated family names, or all"),
         choice_list_option("--methods", "LIST", all_method_names(), "all", "the methods to run"),
@@ -46,6 +50,7 @@ const CommandSpec& command() {
                     "write the CSV there (default: stdout); written to a temporary renamed\n"
                     "when complete"),
     };
+    for (OptionSpec& o : separation_option_specs()) c.options.push_back(o);
     for (OptionSpec& o : batch_option_specs()) c.options.push_back(o);
     c.epilogue = "exit codes: 0 ran, 2 bad usage, 1 internal error.\n";
     return c;
@@ -61,8 +66,12 @@ std::vector<std::string> split(const std::string& list) {
   return out;
 }
 
-bool answer(const families::AnyQuery& q, tools::Method m) {
-  return std::visit([m](const auto& x) { return tools::ccd(x, m); }, q);
+/// The answer of a method to the question (the contact question when params are the defaults).
+bool answer(const families::AnyQuery& q, tools::Method m, const CcdParams& params) {
+  if (params.min_distance == 0 && params.tmax == 1)
+    return std::visit([m](const auto& x) { return tools::ccd(x, m); }, q);
+  const Method exact_method = m == tools::Method::exact ? Method::exact : Method::filtered;
+  return std::visit([&](const auto& x) { return ccd(x, params, exact_method); }, q);
 }
 
 struct Cell {  // one (family, k): counts per method
@@ -100,8 +109,17 @@ int run_stability(int argc, char** argv) {
       fams.push_back(f);
     }
   }
+  const CcdParams params = separation_params(options);
+  const bool contact_question = params.min_distance == 0 && params.tmax == 1;
   std::vector<tools::Method> methods;
-  for (const std::string& n : options.list("--methods")) methods.push_back(parse_method(n));
+  for (const std::string& n : options.list("--methods")) {
+    const tools::Method m = parse_method(n);
+    if (!contact_question && !tools::is_exact_method(m)) {
+      if (options.text("--methods") == "all") continue;  // all: the methods that answer it
+      throw UsageError("stability: the baseline method " + n + " answers only the contact question");
+    }
+    methods.push_back(m);
+  }
 
   // Tasks: (family, k) pairs, k = -1 for the unperturbed configuration.
   std::vector<std::pair<const families::Family*, int>> tasks;
@@ -120,11 +138,12 @@ int run_stability(int argc, char** argv) {
       std::seed_seq s{seed, static_cast<std::uint64_t>(t), static_cast<std::uint64_t>(i)};
       std::mt19937_64 rng(s);
       const families::Instance inst = family->make(k, i % 2 == 0, rng);
-      const bool reference = answer(inst.query, tools::Method::exact);  // the CGAL reference
-      const bool truth = inst.expected.value_or(reference);       // the construction's, if known
+      const bool reference = answer(inst.query, tools::Method::exact, params);  // the CGAL reference
+      // The construction's answer where the family knows it (the contact question's only).
+      const bool truth = contact_question ? inst.expected.value_or(reference) : reference;
       ++cell.queries;
       for (std::size_t m = 0; m < methods.size(); ++m) {
-        const bool got = methods[m] == tools::Method::exact ? reference : answer(inst.query, methods[m]);
+        const bool got = methods[m] == tools::Method::exact ? reference : answer(inst.query, methods[m], params);
         cell.fp[m] += got && !truth;
         cell.fn[m] += !got && truth;
       }
