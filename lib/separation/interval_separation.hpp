@@ -33,6 +33,7 @@
 #include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "separation/separating_direction.hpp"
 #include "separation/separation_terms.hpp"
 
 namespace exactccd::separation {
@@ -164,8 +165,15 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
   using namespace interval_detail;
   using Kind = kinds::kind_of<Query>;
   const CGAL::Protect_FPU_rounding<true> upward;
+  // Feature pairs whose parts a direction keeps farther than d apart never hold: no term.
+  const auto xd = points3<double>(q);
+  std::array<bool, Kind::features.size()> use{};
+  std::vector<int> feature_of_term;
+  for (std::size_t f = 0; f < Kind::features.size(); ++f)
+    if ((use[f] = !feature_separated<Kind>(xd, Kind::features[f], d))) feature_of_term.push_back(static_cast<int>(f));
+  if (feature_of_term.empty()) return {true, std::nullopt};
   const auto x = points3<I>(q);
-  const std::vector<Term<I>> terms = separation::terms<Kind>(x, I(d) * I(d));
+  const std::vector<Term<I>> terms = separation::terms<Kind>(x, I(d) * I(d), use.data());
   const IntervalVerdict undecided{};
   // 1. t = 0.
   bool all_fail_at_zero = true;
@@ -201,7 +209,7 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
       if (g_positive && certain_sign(evaluate(term.distance, I(cell.a))) > 0 &&
           certain_sign(evaluate(term.distance, I(cell.b))) < 0 &&
           certain_sign(evaluate(derivative(term.distance), I(cell.a, cell.b))) != 0) {
-        const kinds::Feature& feature = Kind::features[alive];
+        const kinds::Feature& feature = Kind::features[feature_of_term[alive]];
         // Narrowing: f(a) > 0 > f(b) around the single root. Each step examines one double m
         // strictly inside (a, b), chosen by regula falsi on midpoint approximations of f(a) and
         // f(b) (any choice is valid: only the certain sign at m is used), bisecting instead when

@@ -99,9 +99,11 @@ void feature_condition(const kinds::Feature& f, Rel&& rel, const DD& dd, Out&& o
   }
 }
 
-/// The terms of a kind's feature pairs for a query with points `x` (points3) and d^2 = `d2`.
+/// The terms of a kind's feature pairs for a query with points `x` (points3) and d^2 = `d2`;
+/// only those of the features f with use[f] when `use` is given (then in feature order).
 template <class Kind, class NT, std::size_t N>
-std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2) {
+std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2,
+                            const bool* use = nullptr) {
   static_assert(N == 2 * Kind::points);
   // The motion of the vector from point i to point j.
   const auto rel = [&](int i, int j) {
@@ -113,8 +115,9 @@ std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2) {
   const contact::Poly<NT, 0> dd{{d2}};
   std::vector<Term<NT>> out;
   out.reserve(Kind::features.size());
-  for (const kinds::Feature& f : Kind::features)
-    feature_condition(f, rel, dd, [&](const auto& distance, const auto&... positive) {
+  for (std::size_t index = 0; index < Kind::features.size(); ++index) {
+    if (use && !use[index]) continue;
+    feature_condition(Kind::features[index], rel, dd, [&](const auto& distance, const auto&... positive) {
       Term<NT> t;
       t.distance = widen(distance);
       int k = 0;
@@ -122,6 +125,7 @@ std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2) {
       t.positives = k;
       out.push_back(std::move(t));
     });
+  }
   return out;
 }
 
