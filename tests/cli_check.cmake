@@ -365,6 +365,21 @@ elseif(CASE STREQUAL "check_separation")
   endforeach()
   run(stability --min-distance 0.01 --methods naive)
   expect_error(2 "stability --min-distance --methods naive")
+  # compare --toi (hand-derived, the same point-point file at d = 1/2: exact TOIs 3/4, none,
+  # 5/6): T = 0.7 is safe by 0.05, T = 0.9 is after 5/6: unsafe; query 1 collides for them only.
+  file(WRITE ${WORK}/theirs.txt "1 0.7\n1 0.5\n1 0.9\n")
+  run(compare --kind pp --min-distance 0.5 --toi ${WORK}/theirs.txt ${pp})
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "false positives 1, false negatives 0\n1 FP -\ntoi: shared collisions 2, safe 1, unsafe 1\n"
+     OR NOT out MATCHES "gap lo - T of the safe TOIs \\(min q25 median q75 max\\): 0.05 0.05 0.05 0.05 0.05\n"
+     OR NOT out MATCHES "\n2 unsafe T 0.90000000000000002 exact \\[0.83333333333333326, 0.83333333333333337\\]\n$")
+    message(FATAL_ERROR "compare --toi: exit ${rc}, printed '${out}'\n${err}")
+  endif()
+  file(WRITE ${WORK}/bad.txt "1\n0\n0\n")  # a collision without its time: file:line
+  run(compare --kind pp --toi ${WORK}/bad.txt ${pp})
+  expect_error(2 "compare --toi without a time")
+  if(NOT err MATCHES "bad.txt:1: expected 0, or 1 and a time of impact")
+    message(FATAL_ERROR "compare --toi without a time: stderr '${err}'")
+  endif()
   # A 2D file read as 3D has the wrong number of columns: file:line.
   run(check --kind pe ${DATA}/separation-point-edge-2d.csv)
   expect_error(2 "2D file as pe")

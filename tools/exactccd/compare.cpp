@@ -1,5 +1,9 @@
 // exactccd compare: the oracle for another CCD code's answers on a benchmark file.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <iostream>
 #include <vector>
 
@@ -15,7 +19,7 @@ const CommandSpec& command() {
   static const CommandSpec spec = [] {
     CommandSpec c;
     c.name = "compare";
-    c.usage = "usage: exactccd compare [--kind KIND] [--min-distance D] [--tmax T] --answers THEIRS.txt FILE.csv";
+    c.usage = "usage: exactccd compare [--kind KIND] [--min-distance D] [--tmax T] (--answers | --toi) THEIRS.txt FILE.csv";
     c.description =
         "Compares another code's answers with the exact ones. THEIRS.txt holds one answer per query of\n"
         "FILE.csv (benchmark CSV format), 0 or 1, one per line, in file order. Prints the number of\n"
@@ -24,10 +28,19 @@ const CommandSpec& command() {
         "degeneracy categories (coplanar_for_all_t, root_at_t0, root_at_t1, multiple_root,\n"
         "degenerate_triangle, parallel_edges, zero_length_edge, static, or generic; vf and ee), decided\n"
         "exactly. With --min-distance and --tmax the exact answer is that of the question \"distance <= D\n"
-        "at some t in [0, T]\".\n";
+        "at some t in [0, T]\".\n"
+        "\n"
+        "With --toi THEIRS.txt each line is 0, or 1 and the other code's time of impact T (a decimal\n"
+        "number, read as the nearest double). Besides FP and FN it reports, for the collisions both\n"
+        "find, how many TOIs are safe (T <= the exact TOI t*: a step to T does not pass through a\n"
+        "contact; decided exactly: t* lies in the tightest double interval [lo, hi], so T <= t* iff\n"
+        "T <= lo) and unsafe (T > t*), the gap t* - T of the safe ones (as lo - T, a lower bound\n"
+        "within one ulp, rounded to double) and the relative gap (lo - T) / lo as quantiles (min,\n"
+        "25%, median, 75%, max), then one line per unsafe TOI: its index, T and [lo, hi].\n";
     c.options = {
         kind_option("query kind (default: inferred from the path of FILE.csv)"),
-        required(text_option("--answers", "FILE", "", "the other code's answers")),
+        text_option("--answers", "FILE", "", "the other code's answers, 0 or 1 per line"),
+        text_option("--toi", "FILE", "", "the other code's answers with times of impact: 0, or 1 T"),
     };
     for (OptionSpec& o : separation_option_specs()) c.options.push_back(o);
     c.epilogue = "exit codes: 0 ran (whatever it found), 2 bad usage or malformed input, 1 internal error.\n";
@@ -36,19 +49,55 @@ const CommandSpec& command() {
   return spec;
 }
 
-std::vector<bool> read_answers(const std::string& path) {
+/// One answer of the other code: collides, and its time of impact when given.
+struct TheirAnswer {
+  bool collides = false;
+  std::optional<double> toi;
+};
+
+/// Reads one answer per non-blank line: "0" or "1" (with_toi false), "0" or "1 T" (with_toi):
+/// anything else is a ParseError naming the line.
+std::vector<TheirAnswer> read_answers(const std::string& path, bool with_toi) {
   io::InputFile file(path);
-  std::vector<bool> out;
+  std::vector<TheirAnswer> out;
   std::string line;
   for (std::size_t n = 1; std::getline(file.stream(), line); ++n) {
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos) continue;
-    const auto last = line.find_last_not_of(" \t\r");
-    const std::string v = line.substr(first, last - first + 1);
-    if (v != "0" && v != "1") throw io::ParseError(path, n, "expected 0 or 1, found '" + v + "'");
-    out.push_back(v == "1");
+    std::istringstream fields(line);
+    std::vector<std::string> words;
+    for (std::string w; fields >> w;) words.push_back(w);
+    if (words.empty()) continue;
+    const std::string expected = with_toi ? "expected 0, or 1 and a time of impact" : "expected 0 or 1";
+    if (words[0] != "0" && words[0] != "1")
+      throw io::ParseError(path, n, expected + ", found '" + words[0] + "'");
+    TheirAnswer a{words[0] == "1", std::nullopt};
+    const std::size_t fields_wanted = with_toi && a.collides ? 2 : 1;
+    if (words.size() != fields_wanted)
+      throw io::ParseError(path, n, expected + ", found " + std::to_string(words.size()) + " fields");
+    if (fields_wanted == 2) {
+      const std::string& w = words[1];
+      double t = 0;
+      const auto [end, error] = std::from_chars(w.data(), w.data() + w.size(), t);
+      if (error != std::errc() || end != w.data() + w.size() || !std::isfinite(t))
+        throw io::ParseError(path, n, "the time of impact '" + w + "' is not a finite number");
+      a.toi = t;
+    }
+    out.push_back(a);
   }
   file.check_read();
+  return out;
+}
+
+/// "min q25 median q75 max" of the values (nearest-rank quantiles), or "-" for none.
+std::string quantiles(std::vector<double> v) {
+  if (v.empty()) return "-";
+  std::sort(v.begin(), v.end());
+  std::string out;
+  for (const double q : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+    const std::size_t i = static_cast<std::size_t>(std::llround(q * static_cast<double>(v.size() - 1)));
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%s%.6g", out.empty() ? "" : " ", v[i]);
+    out += buf;
+  }
   return out;
 }
 
@@ -61,35 +110,60 @@ int run_compare(int argc, char** argv) {
     return kExitOk;
   }
   const std::optional<QueryKind> kind = kind_of(options);
-  const std::string answers_path = options.text("--answers");
+  const bool with_toi = options.has("--toi");
+  if (with_toi == options.has("--answers"))
+    throw UsageError("compare: give exactly one of --answers THEIRS.txt and --toi THEIRS.txt");
+  const std::string answers_path = options.text(with_toi ? "--toi" : "--answers");
   if (options.positionals().size() > 1) throw UsageError("compare: one benchmark file at a time");
   if (options.positionals().empty()) throw UsageError("compare: needs --answers THEIRS.txt and FILE.csv");
   const std::string file = options.positionals()[0];
   const Dataset d = load_dataset(file, kind);
   const CcdParams params = separation_params(options);
   const RationalCcdParams exact_params{mpq_class(params.min_distance), mpq_class(params.tmax)};
-  const std::vector<bool> theirs = read_answers(answers_path);
+  const std::vector<TheirAnswer> theirs = read_answers(answers_path, with_toi);
   if (theirs.size() != d.queries.size())
     throw UsageError("compare: " + answers_path + " has " + std::to_string(theirs.size()) + " answers but " +
                      file + " has " + std::to_string(d.queries.size()) + " queries");
-  std::size_t fp = 0, fn = 0;
-  std::vector<std::string> lines;
+  std::size_t fp = 0, fn = 0, shared = 0;
+  std::vector<std::string> lines, unsafe;
+  std::vector<double> gaps, relative_gaps;
   for (std::size_t i = 0; i < d.queries.size(); ++i) {
+    const bool they_collide = theirs[i].collides;
     const auto [exact, labels] = visit_kind(d.kind, [&](auto kind) {
       using Kind = decltype(kind);
       const auto q = io::query_at<typename Kind::template Query<mpq_class>>(d.queries, i);
-      const bool collides = ccd(q, exact_params);
+      const std::optional<TimeInterval> t = toi(q, exact_params);
       std::vector<std::string> categories;
       if constexpr (is_contact_kind<Kind>)
-        if (theirs[i] != collides) categories = exact::degeneracy_categories(q);
-      return std::pair(collides, categories);
+        if (they_collide != t.has_value() && (params.min_distance == 0 && params.tmax == 1))
+          categories = exact::degeneracy_categories(q);
+      return std::pair(t, categories);
     });
-    if (theirs[i] == exact) continue;
-    (theirs[i] ? fp : fn)++;
-    lines.push_back(std::to_string(i) + (theirs[i] ? " FP " : " FN ") + exact::join_categories(labels));
+    if (they_collide && exact && theirs[i].toi) {
+      ++shared;
+      const double T = *theirs[i].toi;
+      if (T <= exact->lo) {  // T <= t* exactly (no double lies strictly inside (lo, hi))
+        gaps.push_back(exact->lo - T);
+        if (exact->lo > 0) relative_gaps.push_back((exact->lo - T) / exact->lo);
+      } else {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%zu unsafe T %.17g exact [%.17g, %.17g]", i, T, exact->lo, exact->hi);
+        unsafe.push_back(buf);
+      }
+    }
+    if (they_collide == exact.has_value()) continue;
+    (they_collide ? fp : fn)++;
+    lines.push_back(std::to_string(i) + (they_collide ? " FP " : " FN ") +
+                    (labels.empty() ? std::string("-") : exact::join_categories(labels)));
   }
   std::printf("queries %zu, false positives %zu, false negatives %zu\n", d.queries.size(), fp, fn);
   for (const std::string& l : lines) std::printf("%s\n", l.c_str());
+  if (with_toi) {
+    std::printf("toi: shared collisions %zu, safe %zu, unsafe %zu\n", shared, gaps.size(), unsafe.size());
+    std::printf("gap lo - T of the safe TOIs (min q25 median q75 max): %s\n", quantiles(gaps).c_str());
+    std::printf("relative gap (lo - T) / lo (min q25 median q75 max): %s\n", quantiles(relative_gaps).c_str());
+    for (const std::string& u : unsafe) std::printf("%s\n", u.c_str());
+  }
   return kExitOk;
 }
 
