@@ -70,6 +70,29 @@ foreach(kind vf ee)
   if(NOT replayed EQUAL found)
     message(FATAL_ERROR "${kind}: naive errs on ${replayed} of the ${found} written disagreements")
   endif()
+  # The example plug-in reports times of impact (plugin.h's optional entry point): the unsafe
+  # ones are written and replay: each collides exactly, and `compare --toi` with the plug-in's
+  # times (from the .txt) finds every one unsafe.
+  execute_process(COMMAND ${EXE} fuzz-against ${NAIVE} --kind ${kind} --queries 300 --seed 7 --threads 2
+                          --out ${dir}-toi RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "collisions both find, ([0-9]+) safe \\(T <= exact\\), ([0-9]+) unsafe")
+    message(FATAL_ERROR "fuzz-against ${kind}: no times-of-impact line\n${out}\n${err}")
+  endif()
+  set(unsafe ${CMAKE_MATCH_2})
+  if(unsafe GREATER 0)
+    file(STRINGS ${dir}-toi/unsafe-toi-${long}.txt lines REGEX "  T ")
+    set(theirs "")
+    foreach(line IN LISTS lines)
+      string(REGEX MATCH "  T ([^ ]+)  exact" m "${line}")
+      string(APPEND theirs "1 ${CMAKE_MATCH_1}\n")
+    endforeach()
+    file(WRITE ${dir}-toi/theirs.txt "${theirs}")
+    execute_process(COMMAND ${EXE} compare --kind ${kind} --toi ${dir}-toi/theirs.txt ${dir}-toi/unsafe-toi-${long}.csv
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "false positives 0, false negatives 0\ntoi: shared collisions ${unsafe}, safe 0, unsafe ${unsafe}\n")
+      message(FATAL_ERROR "${kind}: the unsafe TOIs do not replay with compare --toi:\n${out}\n${err}")
+    endif()
+  endif()
   # Each single file replays on its own: one query, FP or FN as its name says.
   list(GET singles 0 first)
   string(REGEX MATCH "-(FP|FN)-" type ${first})

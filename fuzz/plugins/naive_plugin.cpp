@@ -11,3 +11,12 @@ extern "C" EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_vf(const double q[24]) {
 extern "C" EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_ee(const double q[24]) {
   return exactccd::plugins::edge_edge_answer(q, exactccd::tools::Method::naive);
 }
+
+// The same method's time of impact (the optional entry points of plugin.h).
+extern "C" EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_vf_toi(const double q[24], double* toi) {
+  return exactccd::plugins::toi_answer<exactccd::VertexFaceQuery>(q, toi, exactccd::tools::Method::naive);
+}
+
+extern "C" EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_ee_toi(const double q[24], double* toi) {
+  return exactccd::plugins::toi_answer<exactccd::EdgeEdgeQuery>(q, toi, exactccd::tools::Method::naive);
+}

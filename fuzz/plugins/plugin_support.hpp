@@ -37,4 +37,17 @@ inline int edge_edge_answer(const double q[24], tools::Method method) noexcept {
   }
 }
 
+/// 1 and the method's TOI (the lower end of its interval) in *toi, or 0; -1 if it threw.
+template <class Query>
+int toi_answer(const double q[24], double* toi, tools::Method method) noexcept {
+  try {
+    const auto t = tools::toi(query_from<Query>(q), method);
+    if (!t) return 0;
+    *toi = t->lo;
+    return 1;
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
 }  // namespace exactccd::plugins

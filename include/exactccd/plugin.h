@@ -25,6 +25,17 @@
  * With `--threads N > 1` the function is called concurrently from N threads, so it must be
  * thread-safe (or run with `--threads 1`, the default). A crash in the plug-in ends the run.
  *
+ * **Times of impact (optional).** A plug-in may also export, for a kind,
+ *
+ *     int exactccd_plugin_vf_toi(const double q[24], double* toi);
+ *     int exactccd_plugin_ee_toi(const double q[24], double* toi);
+ *
+ * returning 1 and its time of impact in `*toi` when its code reports a collision, 0 when it
+ * reports none. When the symbol of the requested kind is present, `fuzz-against` calls it
+ * instead of the answer-only one and also checks, for every collision both find, that the time
+ * is safe (`toi <=` the exact TOI: a step to it does not pass through a contact). Plug-ins
+ * without it work as before.
+ *
  * Including this header is optional; it lets the compiler check the signatures. Build a
  * plug-in with, for example,
  *
@@ -48,6 +59,10 @@
 #define EXACTCCD_PLUGIN_VF_SYMBOL "exactccd_plugin_vf"
 /** The name of the edge-edge entry point, for `dlsym`. */
 #define EXACTCCD_PLUGIN_EE_SYMBOL "exactccd_plugin_ee"
+/** The name of the optional vertex-face entry point with a time of impact. */
+#define EXACTCCD_PLUGIN_VF_TOI_SYMBOL "exactccd_plugin_vf_toi"
+/** The name of the optional edge-edge entry point with a time of impact. */
+#define EXACTCCD_PLUGIN_EE_TOI_SYMBOL "exactccd_plugin_ee_toi"
 
 #ifdef __cplusplus
 extern "C" {
@@ -55,6 +70,9 @@ extern "C" {
 
 /** The type of both entry points: 24 doubles in, 1 (collision) or 0 (none) out. */
 typedef int (*exactccd_plugin_fn)(const double q[24]);
+
+/** The type of the optional entry points with a time of impact: 1 and *toi, or 0. */
+typedef int (*exactccd_plugin_toi_fn)(const double q[24], double* toi);
 
 /**
  * Vertex-face CCD of the plug-in's code: 1 if the vertex p meets the triangle (a, b, c) for
@@ -67,6 +85,12 @@ EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_vf(const double q[24]);
  * in [0, 1], else 0. q = a0_t0, a1_t0, b0_t0, b1_t0, a0_t1, a1_t1, b0_t1, b1_t1 (x y z each).
  */
 EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_ee(const double q[24]);
+
+/** Optional: vertex-face CCD with the plug-in's time of impact in *toi when it returns 1. */
+EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_vf_toi(const double q[24], double* toi);
+
+/** Optional: edge-edge CCD with the plug-in's time of impact in *toi when it returns 1. */
+EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_ee_toi(const double q[24], double* toi);
 
 #ifdef __cplusplus
 }

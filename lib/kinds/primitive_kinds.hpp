@@ -41,6 +41,7 @@ struct VertexFace {
   static constexpr std::string_view short_name = "vf";     ///< the CLI's --kind value
   static constexpr std::string_view function = "vertex_face";  ///< C++ and C API stem
   static constexpr std::string_view plugin_symbol = EXACTCCD_PLUGIN_VF_SYMBOL;  ///< plugin.h
+  static constexpr std::string_view plugin_toi_symbol = EXACTCCD_PLUGIN_VF_TOI_SYMBOL;  ///< optional
   static constexpr int points = 4;  ///< moving points; a query has 2 * points rows
   static constexpr std::array<std::string_view, points> point_names{"p", "a", "b", "c"};
   /// The volume V = (b - a) . ((c - a) x (p - a)) as rows {base, u, v, w}: V = det[u - base,
@@ -67,6 +68,7 @@ struct EdgeEdge {
   static constexpr std::string_view short_name = "ee";
   static constexpr std::string_view function = "edge_edge";
   static constexpr std::string_view plugin_symbol = EXACTCCD_PLUGIN_EE_SYMBOL;
+  static constexpr std::string_view plugin_toi_symbol = EXACTCCD_PLUGIN_EE_TOI_SYMBOL;
   static constexpr int points = 4;
   static constexpr std::array<std::string_view, points> point_names{"a0", "a1", "b0", "b1"};
   /// V = (a1 - a0) . ((b0 - a0) x (b1 - a0)).

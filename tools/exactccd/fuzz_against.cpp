@@ -92,6 +92,16 @@ class Plugin {
     }
     static_assert(sizeof(void*) == sizeof(exactccd_plugin_fn), "dlsym returns functions as void*");
     std::memcpy(&fn_, &f, sizeof fn_);  // POSIX: a dlsym'd function pointer is stored as void*
+    // The optional entry point with a time of impact (plugin.h).
+    const char* toi_symbol = visit_kind(kind, [](auto k) -> const char* {
+      if constexpr (is_contact_kind<decltype(k)>) return decltype(k)::plugin_toi_symbol.data();
+      return nullptr;
+    });
+    dlerror();
+    if (void* g = toi_symbol ? dlsym(handle_, toi_symbol) : nullptr) {
+      static_assert(sizeof(void*) == sizeof(exactccd_plugin_toi_fn), "dlsym returns functions as void*");
+      std::memcpy(&toi_fn_, &g, sizeof toi_fn_);
+    }
   }
   ~Plugin() { dlclose(handle_); }
   Plugin(const Plugin&) = delete;
@@ -100,21 +110,35 @@ class Plugin {
   /// The plug-in's raw answer on a query.
   int operator()(const Rows& r) const {
     double q[24];
-    for (std::size_t i = 0; i < 8; ++i) {
-      q[3 * i] = r[i].x;
-      q[3 * i + 1] = r[i].y;
-      q[3 * i + 2] = r[i].z;
-    }
+    flatten(r, q);
     return fn_(q);
+  }
+
+  /// True when the plug-in reports times of impact (the optional entry point).
+  bool reports_toi() const { return toi_fn_ != nullptr; }
+
+  /// The plug-in's raw answer and, when it is 1, its time of impact (reports_toi() only).
+  int answer_with_toi(const Rows& r, double& toi) const {
+    double q[24];
+    flatten(r, q);
+    return toi_fn_(q, &toi);
   }
 
   /// The symbol used.
   const char* symbol() const { return symbol_; }
 
  private:
+  static void flatten(const Rows& r, double* q) {
+    for (std::size_t i = 0; i < 8; ++i) {
+      q[3 * i] = r[i].x;
+      q[3 * i + 1] = r[i].y;
+      q[3 * i + 2] = r[i].z;
+    }
+  }
   const char* symbol_;
   void* handle_ = nullptr;
   exactccd_plugin_fn fn_ = nullptr;
+  exactccd_plugin_toi_fn toi_fn_ = nullptr;
 };
 
 constexpr int kKMin = families::kUnperturbed, kKMax = 60;
@@ -217,6 +241,12 @@ struct Outcome {
   bool disagrees() const { return !error() && (theirs == 1) != truth; }
   Rows shrunk{};
   std::string note;  ///< how it was shrunk
+  std::optional<double> their_toi;         ///< the plug-in's TOI, when it reports one
+  std::optional<TimeInterval> exact_toi;   ///< the exact TOI, for collisions both find
+  /// Both find the collision and the plug-in's time is after the exact one: a step to it
+  /// passes through a contact (decided exactly: t* is in the tight [lo, hi], so T <= t* iff
+  /// T <= lo).
+  bool unsafe() const { return their_toi && exact_toi && *their_toi > exact_toi->lo; }
 };
 
 /// "-1, 23..60" from a sorted set of k.
@@ -317,7 +347,8 @@ void write_atomically(const fs::path& path, const std::string& text) { write_fil
 
 /// An earlier run's output of this kind: NNNNNN-*-<kind>.csv and disagreements-<kind>.*.
 bool is_output_of_kind(const std::string& name, const std::string& kind_suffix) {
-  if (name == "disagreements-" + kind_suffix + ".csv" || name == "disagreements-" + kind_suffix + ".txt")
+  if (name == "disagreements-" + kind_suffix + ".csv" || name == "disagreements-" + kind_suffix + ".txt" ||
+      name == "unsafe-toi-" + kind_suffix + ".csv" || name == "unsafe-toi-" + kind_suffix + ".txt")
     return true;
   const std::string tail = "-" + kind_suffix + ".csv";
   if (name.size() < 7 + tail.size() || name.compare(name.size() - tail.size(), tail.size(), tail) != 0)
@@ -382,7 +413,16 @@ int fuzz_kind(const Run& run) {
     q = generate<Kind>(i, seed, groups);
     Outcome& o = outcomes[i];
     o.truth = exact_answer<Kind>(q.rows);
-    o.theirs = plugin(q.rows);
+    if (plugin.reports_toi()) {
+      double t = 0;
+      o.theirs = plugin.answer_with_toi(q.rows, t);
+      if (o.theirs == 1 && o.truth) {
+        o.their_toi = t;
+        o.exact_toi = toi(from_rows<typename Kind::template Query<double>>(q.rows), Method::exact);
+      }
+    } else {
+      o.theirs = plugin(q.rows);
+    }
     if (!o.disagrees()) return;
     if (run.shrinking) {
       shrink<Kind>(q, o, plugin);
@@ -423,6 +463,39 @@ int fuzz_kind(const Run& run) {
   for (std::size_t g = 0; g < table.size(); ++g) print_row(groups.names[g], table[g]);
   print_row("total", total);
 
+  // Times of impact, when the plug-in reports them.
+  std::string unsafe_index;
+  io::BenchmarkQueries unsafe_queries;
+  if (plugin.reports_toi()) {
+    std::size_t shared = 0;
+    std::vector<double> gaps;
+    for (std::size_t i = 0; i < queries; ++i) {
+      const Outcome& o = outcomes[i];
+      if (!o.their_toi || !o.exact_toi) continue;
+      ++shared;
+      if (!o.unsafe()) {
+        gaps.push_back(o.exact_toi->lo - *o.their_toi);
+        continue;
+      }
+      char line[200];
+      std::snprintf(line, sizeof line, "%06zu  %s  T %.17g  exact [%.17g, %.17g]\n", i,
+                    groups.names[generated[i].group].c_str(), *o.their_toi, o.exact_toi->lo, o.exact_toi->hi);
+      unsafe_index += line;
+      std::array<RationalVec3, 8> rational;
+      for (std::size_t p = 0; p < 8; ++p)
+        rational[p] = {mpq_class(generated[i].rows[p].x), mpq_class(generated[i].rows[p].y),
+                       mpq_class(generated[i].rows[p].z)};
+      unsafe_queries.rows.push_back(rational);
+      unsafe_queries.truth.push_back(true);
+    }
+    std::sort(gaps.begin(), gaps.end());
+    const auto at = [&](double q) { return gaps[static_cast<std::size_t>(std::llround(q * (gaps.size() - 1)))]; };
+    std::printf("\ntimes of impact (%s): %zu collisions both find, %zu safe (T <= exact), %zu unsafe (T after the "
+                "exact time)\n", plugin.symbol(), shared, gaps.size(), unsafe_queries.size());
+    if (!gaps.empty())
+      std::printf("gap lo - T of the safe ones: min %.3g, median %.3g, max %.3g\n", at(0), at(0.5), at(1));
+  }
+
   // The disagreements: replace this kind's files of an earlier run, then write.
   for (const auto& entry : fs::directory_iterator(out_dir))
     if (entry.is_regular_file() && is_output_of_kind(entry.path().filename().string(), kind_suffix))
@@ -457,6 +530,16 @@ int fuzz_kind(const Run& run) {
                        std::to_string(queries) + " --seed " + std::to_string(seed) +
                        ": one line per disagreement (file, FP/FN, group, shrinking), then the shrunk query "
                        "in hex floats; the rows of disagreements-" + kind_suffix + ".csv in order\n" + index);
+  if (plugin.reports_toi()) {
+    std::ostringstream unsafe_csv;
+    io::write_benchmark_csv(unsafe_csv, unsafe_queries);
+    write_atomically(fs::path(out_dir) / ("unsafe-toi-" + kind_suffix + ".csv"), unsafe_csv.str());
+    write_atomically(fs::path(out_dir) / ("unsafe-toi-" + kind_suffix + ".txt"),
+                     "# exactccd fuzz-against " + plugin_path + " --kind " + kind_short +
+                         ": one line per collision whose reported time of impact T is after the exact "
+                         "one (index, group, T, exact TOI); the rows of unsafe-toi-" + kind_suffix +
+                         ".csv in order\n" + unsafe_index);
+  }
   std::printf("\n%zu disagreements (FP %zu, FN %zu)%s, written to %s: one CSV each, all in "
               "disagreements-%s.csv, described in disagreements-%s.txt\n"
               "replay: exactccd check --kind %s %s/disagreements-%s.csv\n",
