@@ -85,7 +85,7 @@ int run_check(int argc, char** argv) {
 
   // Parse everything first: a malformed file fails before anything is printed.
   TruthSource truth;
-  truth.json = options.text("--truth");
+  truth.json = options.has("--truth") ? options.text("--truth") : "";
   truth.required = !answers;
   if (!truth.json.empty() && files.size() != 1)
     throw UsageError("check: --truth FILE.json goes with one FILE.csv (" + std::to_string(files.size()) + " given)");
