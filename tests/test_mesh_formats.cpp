@@ -168,6 +168,12 @@ TEST(MeshFormats, PlyBinaryErrorsNameTheByteOffset) {
     EXPECT_NE(ply_error(good.substr(0, cut)), "") << cut;
   EXPECT_NE(ply_error(good.substr(0, good.size() - 2)).find("m.ply: byte offset"), std::string::npos);
   EXPECT_NE(ply_error(good.substr(0, good.size() - 2)).find("truncated"), std::string::npos);
+  // A header ending the file without its newline (found by mutation under ASan: it read past
+  // the end).
+  EXPECT_NE(ply_error("ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                      "property float z\nend_header")
+                .find("truncated"),
+            std::string::npos);
   // Trailing data: the counts are wrong.
   EXPECT_NE(ply_error(good + "xx").find("2 bytes of data after the last element"), std::string::npos);
   // Non-finite coordinate: vertex 0's x is the first 4 bytes of the body.

@@ -1,5 +1,6 @@
 #include "io/mesh_formats.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -382,7 +383,7 @@ ObjMesh read_ply(std::istream& in, const std::string& source) {
   const bool big = format == Format::big;
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
   const std::size_t size = data.size();
-  std::size_t offset = lines.pos();
+  std::size_t offset = std::min(lines.pos(), size);  // end_header may end the file without a newline
   const auto fail = [&](std::size_t at, const std::string& where, const std::string& why) {
     throw InputError(source, "byte offset " + std::to_string(at) + " (" + where + "): " + why);
   };
