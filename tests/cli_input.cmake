@@ -301,23 +301,36 @@ elseif(CASE STREQUAL "out_unwritable")
   endif()
 
 elseif(CASE STREQUAL "scene_formats")
-  # Only OBJ is read; other mesh formats are recognised and refused, a mislabelled or unknown
-  # file is an error, never an empty mesh answered "intersection-free".
+  # Every format is read: each bundled tetrahedron gives the OBJ tetrahedron's answer; a
+  # mislabelled or unknown file is an error, never an empty mesh answered "intersection-free".
   set(meshes ${DATA}/meshes)
   set(tri "f 1 2 3\nf 4 5 6\n")
   set(t0 "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0.25 0.25 1\nv 0.6 0.25 1\nv 0.25 0.6 1\n${tri}")
   file(WRITE ${WORK}/T0.obj "${t0}")
   file(WRITE ${WORK}/T1.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0.25 0.25 -1\nv 0.6 0.25 -1\nv 0.25 0.6 -1\n${tri}")
-  foreach(f tetra.ply tetra-ascii.ply)
-    run(scene ${meshes}/${f} ${meshes}/${f})
-    expect_input_error("${f}" "${f}: PLY meshes are not supported yet")
+  file(WRITE ${WORK}/tetra.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
+  run(scene --json ${WORK}/tetra.obj ${WORK}/tetra.obj)
+  set(tetra "${out}")
+  if(NOT rc EQUAL 0 OR NOT tetra MATCHES "\"vertices\": 4, \"triangles\": 4")
+    message(FATAL_ERROR "scene on tetra.obj: exit ${rc}\n${out}\n${err}")
+  endif()
+  foreach(f tetra.ply tetra-ascii.ply tetra-be.ply tetra.off tetra.stl tetra-ascii.stl)
+    run(scene --json ${meshes}/${f} ${meshes}/${f})
+    if(NOT rc EQUAL 0 OR NOT out STREQUAL tetra)
+      message(FATAL_ERROR "scene on ${f}: exit ${rc}, output differs from tetra.obj's:\n${out}\n${tetra}\n${err}")
+    endif()
   endforeach()
-  run(scene ${meshes}/tetra.off ${meshes}/tetra.off)
-  expect_input_error("OFF" "tetra.off: OFF meshes are not supported yet")
-  foreach(f tetra.stl tetra-ascii.stl)
-    run(scene ${meshes}/${f} ${meshes}/${f})
-    expect_input_error("${f}" "${f}: STL meshes are not supported yet")
-  endforeach()
+  # Malformed files of the other formats: errors with the line.
+  file(READ ${meshes}/tetra-ascii.ply ascii_ply)
+  string(REPLACE "element vertex 4" "element vertex 5" wrong_count "${ascii_ply}")
+  file(WRITE ${WORK}/count.ply "${wrong_count}")
+  run(scene ${WORK}/count.ply ${WORK}/count.ply)
+  expect_input_error("PLY with a wrong vertex count" "count.ply:15: too many values for element 'vertex' [(]4, expected 3[)]")
+  file(READ ${meshes}/tetra.off off)
+  string(REPLACE "3 1 2 3" "3 1 2 4" off_range "${off}")
+  file(WRITE ${WORK}/range.off "${off_range}")
+  run(scene ${WORK}/range.off ${WORK}/range.off)
+  expect_input_error("OFF index out of range" "range.off:10: face vertex index 4 out of range")
   # Mislabelled content: the extension and the content must agree.
   foreach(pair "tetra.ply|ply.obj|the content is PLY, but the extension says OBJ"
                "tetra-ascii.ply|ascii-ply.obj|the content is PLY, but the extension says OBJ"

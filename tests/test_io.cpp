@@ -1,5 +1,6 @@
 // Tests of the benchmark CSV reader and writer (lib/io/benchmark_csv).
 #include "io/benchmark_csv.hpp"
+#include "io/truth_json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -178,6 +179,65 @@ TEST(ReadBenchmarkCsv, RejectsIncompleteQueryNamingItsLastRow) {
   std::string three_rows = query_rows(1);
   three_rows.resize(three_rows.find('\n', three_rows.find('\n', three_rows.find('\n') + 1) + 1));
   EXPECT_EQ(error_line(three_rows), 3);
+}
+
+TEST(ReadBenchmarkCsv, SixColumnsWithoutTruthColumn) {
+  // The Scalable CCD dataset's query files: ", " separators, no truth column.
+  std::string text;
+  for (int i = 0; i < 16; ++i) text += std::to_string(i) + ", 4, -3, 8, 0, 1\n";
+  std::istringstream peek(text);
+  EXPECT_EQ(first_row_columns(peek), 6);
+  std::istringstream in(text);
+  const BenchmarkQueries q = read_benchmark_csv(in, "227vf.csv", {8, 3, false});
+  ASSERT_EQ(q.size(), 2u);
+  EXPECT_EQ(q.truth, (std::vector<bool>{false, false}));
+  EXPECT_EQ(q.rows[1][2].x, mpq_class(5, 2));  // row 10: 10/4, canonicalized
+  EXPECT_EQ(q.rows[0][0].y, mpq_class(-3, 8));
+  // A truth column where none is expected is a wrong field count, and the other way round.
+  std::istringstream seven(query_rows(1));
+  EXPECT_THROW(read_benchmark_csv(seven, "x.csv", {8, 3, false}), ParseError);
+  std::istringstream six(text);
+  EXPECT_THROW(read_benchmark_csv(six, "x.csv"), ParseError);
+  // Written back without a truth column.
+  std::stringstream out;
+  write_benchmark_csv(out, q);
+  EXPECT_EQ(out.str().substr(0, out.str().find('\n')), "0,1,-3,8,0,1");
+  const BenchmarkQueries back = read_benchmark_csv(out, "back.csv", {8, 3, false});
+  ASSERT_EQ(back.size(), q.size());
+  for (std::size_t i = 0; i < q.size(); ++i)
+    for (std::size_t k = 0; k < 8; ++k) {
+      EXPECT_EQ(back.rows[i][k].x, q.rows[i][k].x);
+      EXPECT_EQ(back.rows[i][k].y, q.rows[i][k].y);
+      EXPECT_EQ(back.rows[i][k].z, q.rows[i][k].z);
+    }
+  std::istringstream blank("\n  \n");
+  EXPECT_EQ(first_row_columns(blank), 0);
+}
+
+std::string truth_error(const std::string& text) {
+  std::istringstream in(text);
+  try {
+    read_truth_json(in, "t.json");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TruthJson, ReadsArraysOfBooleansStrictly) {
+  std::istringstream in("\xEF\xBB\xBF [true,false,\r\n  true ]\n");
+  EXPECT_EQ(read_truth_json(in, "t.json"), (std::vector<bool>{true, false, true}));
+  std::istringstream empty("[]");
+  EXPECT_TRUE(read_truth_json(empty, "t.json").empty());
+  EXPECT_EQ(truth_error(""), "t.json:1: expected a JSON array of booleans ('['), found the end of the input");
+  EXPECT_EQ(truth_error("[true,\n1]"), "t.json:2: value 2 is not true or false: found '1'");
+  EXPECT_EQ(truth_error("[true,\n\nnull]"), "t.json:3: value 2 is not true or false: found 'null'");
+  EXPECT_EQ(truth_error("[true false]"), "t.json:1: expected ',' or ']' after value 1, found 'false'");
+  EXPECT_EQ(truth_error("[true,]"), "t.json:1: value 2 is not true or false: found ']'");
+  EXPECT_EQ(truth_error("[true"), "t.json:1: expected ',' or ']' after value 1, found the end of the input");
+  EXPECT_EQ(truth_error("[true]\n[false]"), "t.json:2: data after the array: '['");
+  EXPECT_EQ(truth_error("[[true]]"), "t.json:1: value 1 is not true or false: found '['");
+  EXPECT_EQ(truth_error("[trueish]"), "t.json:1: expected ',' or ']' after value 1, found 'ish'");
 }
 
 TEST(WriteBenchmarkCsv, RoundTrips) {

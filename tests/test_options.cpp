@@ -207,5 +207,28 @@ TEST(Options, BatchOptionsOfTheSubcommands) {
   EXPECT_THROW(parse({"--threads", std::to_string(kMaxThreads + 1)}, c), UsageError);
 }
 
+TEST(KindFromPath, LongNamesAndTheDatasetsShortNames) {
+  const auto name = [](const std::string& p) {
+    const std::optional<QueryKind> k = kind_from_path(p);
+    return k ? kind_name(*k) : std::string("none");
+  };
+  EXPECT_EQ(name("data/vertex-face.csv"), "vf");
+  EXPECT_EQ(name("edge-edge/run-vertex-face.csv"), "vf");
+  EXPECT_EQ(name("x/edge-edge-2d.csv"), "ee2");
+  EXPECT_EQ(name("x/point-edge-2d-small.csv"), "pe2");
+  EXPECT_EQ(name("cloth-funnel/queries/227vf.csv"), "vf");
+  EXPECT_EQ(name("cloth-funnel/queries/227ee.csv"), "ee");
+  EXPECT_EQ(name("vertex-face/227ee.csv"), "ee");  // the file name wins
+  EXPECT_EQ(name("ee.csv"), "ee");
+  EXPECT_EQ(name("q-vf.csv"), "vf");
+  EXPECT_EQ(name("coffee.csv"), "none");  // 'ee' after a letter
+  EXPECT_EQ(name("vf/queries.csv"), "none");  // folders do not count for the short names
+  EXPECT_EQ(name("227vf.csv/x.csv"), "none");
+}
+
+TEST(KindFromPath, TruthFoundByName) {
+  EXPECT_EQ(truth_path_by_name("d/cloth-funnel/queries/227vf.csv"), "d/cloth-funnel/mma_bool/227vf_mma_bool.json");
+}
+
 }  // namespace
 }  // namespace exactccd::cli

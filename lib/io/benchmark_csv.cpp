@@ -51,6 +51,15 @@ std::size_t significant_digits(const std::string& field) {
 ParseError::ParseError(const std::string& source, std::size_t line, const std::string& what)
     : InputError(source, source + ":" + std::to_string(line) + ": " + what, true), line_(line) {}
 
+int first_row_columns(std::istream& in) {
+  skip_byte_order_mark(in);
+  for (std::string line; std::getline(in, line);) {
+    if (trim(line).empty()) continue;
+    return static_cast<int>(std::count(line.begin(), line.end(), ',')) + 1;
+  }
+  return 0;
+}
+
 BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name, QueryLayout layout) {
   if (layout.rows < 1 || layout.rows > 8 || (layout.dimension != 2 && layout.dimension != 3))
     throw std::invalid_argument("read_benchmark_csv: unsupported layout");
@@ -96,9 +105,9 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
       coordinate[c].canonicalize();
     }
     const mpz_class& truth_field = v[columns - 1];
-    if (truth_field != 0 && truth_field != 1)
+    if (layout.truth_column && truth_field != 0 && truth_field != 1)
       throw ParseError(source_name, line_number, "truth must be 0 or 1");
-    const bool truth = truth_field == 1;
+    const bool truth = layout.truth_column && truth_field == 1;
     if (row_in_query == 0) {
       query_truth = truth;
       query_first_line = line_number;
@@ -133,9 +142,14 @@ void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries) {
   for (std::size_t i = 0; i < queries.size(); ++i)
     for (int k = 0; k < queries.layout.rows; ++k) {
       const RationalVec3& p = queries.rows[i][k];
+      const char* separator = "";
       for (const mpq_class* c : {&p.x, &p.y, &p.z})
-        if (c != &p.z || queries.layout.dimension == 3) out << c->get_num() << ',' << c->get_den() << ',';
-      out << (queries.truth[i] ? 1 : 0) << '\n';
+        if (c != &p.z || queries.layout.dimension == 3) {
+          out << separator << c->get_num() << ',' << c->get_den();
+          separator = ",";
+        }
+      if (queries.layout.truth_column) out << ',' << (queries.truth[i] ? 1 : 0);
+      out << '\n';
     }
 }
 

@@ -41,18 +41,21 @@ constexpr std::size_t kMaxFieldBits = 4096;
 
 /// The shape of a query file: rows per query (each point at t0, then at t1) and coordinates per
 /// row (3; 2 for the 2D kinds). A row has 2 * dimension + 1 columns: num,den per coordinate,
-/// then the truth. The public benchmark's layout is {8, 3}.
+/// then the truth; without the truth column (the Scalable CCD dataset's query files, whose
+/// truth is a JSON file beside them: io/truth_json.hpp) 2 * dimension. The public benchmark's
+/// layout is {8, 3, true}.
 struct QueryLayout {
-  int rows = 8;       ///< 2 * the kind's points: 8, 6 or 4
-  int dimension = 3;  ///< 3, or 2
+  int rows = 8;              ///< 2 * the kind's points: 8, 6 or 4
+  int dimension = 3;         ///< 3, or 2
+  bool truth_column = true;  ///< whether each row ends with the truth (0 or 1)
   /// Columns per row.
-  int columns() const { return 2 * dimension + 1; }
+  int columns() const { return 2 * dimension + (truth_column ? 1 : 0); }
 };
 
 /// The layout of a kind's files (kinds::VertexFace, ...).
 template <class Kind>
 constexpr QueryLayout layout_of() {
-  return {2 * Kind::points, Kind::dimension};
+  return {2 * Kind::points, Kind::dimension, true};
 }
 
 /// Queries of one benchmark file: rows[i] are query i's points in row order (the first
@@ -60,13 +63,18 @@ constexpr QueryLayout layout_of() {
 struct BenchmarkQueries {
   QueryLayout layout;                             ///< rows per query and coordinates per row
   std::vector<std::array<RationalVec3, 8>> rows;  ///< layout.rows points per query, in row order
-  std::vector<bool> truth;                        ///< the truth column, one per query
+  std::vector<bool> truth;                        ///< the truth column, one per query (all false
+                                                  ///< when the layout has no truth column)
   /// The 1-based line of each row, per query (filled by read_benchmark_csv; empty for queries
   /// built in memory).
   std::vector<std::array<std::size_t, 8>> lines;
   /// The number of queries.
   std::size_t size() const { return rows.size(); }
 };
+
+/// The number of comma-separated fields of the first non-blank line of `in` (0 when there is
+/// none), read from the current position: tells a file with a truth column from one without.
+int first_row_columns(std::istream& in);
 
 /// Parses a benchmark CSV. Throws ParseError naming source_name and the line on: a wrong
 /// number of columns (layout.columns()), a non-integer field, an integer of more than
@@ -78,7 +86,7 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
                                     QueryLayout layout = {});
 
 /// Writes queries in the benchmark format, each rational as its exact canonical
-/// numerator,denominator pair. read_benchmark_csv reads back the same queries. Throws
+/// numerator,denominator pair (no truth column when queries.layout has none). read_benchmark_csv reads back the same queries. Throws
 /// std::invalid_argument when queries.truth and queries.rows differ in size.
 void write_benchmark_csv(std::ostream& out, const BenchmarkQueries& queries);
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "io/input_file.hpp"
+#include "io/mesh_formats.hpp"
 
 namespace exactccd::io {
 namespace {
@@ -77,9 +78,9 @@ struct FormatEntry {
 const std::vector<FormatEntry>& formats() {
   static const std::vector<FormatEntry> table = {
       // The specific magic words first: OBJ, the most permissive test, comes last.
-      {MeshFormat::ply, "PLY", {".ply"}, is_ply, nullptr},
-      {MeshFormat::stl, "STL", {".stl"}, is_stl, nullptr},
-      {MeshFormat::off, "OFF", {".off"}, is_off, nullptr},
+      {MeshFormat::ply, "PLY", {".ply"}, is_ply, read_ply},
+      {MeshFormat::stl, "STL", {".stl"}, is_stl, read_stl},
+      {MeshFormat::off, "OFF", {".off"}, is_off, read_off},
       {MeshFormat::obj, "OBJ", {".obj"}, is_obj, read_obj},
   };
   return table;

@@ -1,7 +1,6 @@
 // Mesh files: which format a file holds, from its extension and its content (both must agree),
-// and reading it as a triangle mesh. OBJ is read; PLY, OFF and STL are recognised and refused
-// with an error saying so (never read as something else). A reader for another format plugs
-// into the table of formats in mesh_file.cpp.
+// and reading it as a triangle mesh: OBJ (io/obj.hpp), PLY, OFF and STL (io/mesh_formats.hpp).
+// A reader for another format plugs into the table of formats in mesh_file.cpp.
 #pragma once
 
 #include <string>
@@ -13,9 +12,9 @@ namespace exactccd::io {
 /// The mesh formats recognised.
 enum class MeshFormat {
   obj,  ///< Wavefront OBJ (read by read_obj)
-  ply,  ///< Stanford PLY, ASCII or binary (recognised, not read yet)
-  off,  ///< Object File Format (recognised, not read yet)
-  stl,  ///< STL, ASCII or binary (recognised, not read yet)
+  ply,  ///< Stanford PLY, ASCII or binary (read by read_ply)
+  off,  ///< Object File Format, ASCII (read by read_off)
+  stl,  ///< STL, ASCII or binary (read by read_stl; equal corners merged)
 };
 
 /// "OBJ", "PLY", "OFF" or "STL".
@@ -32,10 +31,11 @@ using TriangleMesh = ObjMesh;
 /// data in an .obj file, a .ply file without the PLY header, ...).
 MeshFormat detect_mesh_format(const std::string& path);
 
-/// The mesh in the file at `path` (format from detect_mesh_format). Throws InputError for
-/// every reason of detect_mesh_format, "<path>: PLY meshes are not supported yet" (likewise
-/// OFF and STL), "<path>: no vertices" or "<path>: no faces" for a mesh without either, and
-/// ParseError ("<path>:<line>: <reason>") for a malformed file.
+/// The mesh in the file at `path` (format from detect_mesh_format, read by read_obj, read_ply,
+/// read_off or read_stl). Throws InputError for every reason of detect_mesh_format, "<path>: no
+/// vertices" or "<path>: no faces" for a mesh without either, "<path>: byte offset N (...):
+/// <reason>" for a malformed binary PLY or STL, and ParseError ("<path>:<line>: <reason>") for
+/// a malformed text file or PLY header.
 TriangleMesh read_mesh(const std::string& path);
 
 }  // namespace exactccd::io

@@ -23,7 +23,13 @@ const CommandSpec& command() {
         "q_t1); the 2D kinds have the rows of their 3D counterpart with 5 columns each\n"
         "(x_num,x_den,y_num,y_den,truth). With --min-distance D and --tmax T a query collides iff the\n"
         "primitives come within distance D at some t in [0, T] (exactly; the truth column must be\n"
-        "that question's).\n";
+        "that question's).\n"
+        "\n"
+        "The Scalable CCD dataset's query files (6 columns x_num, x_den, y_num, y_den, z_num, z_den,\n"
+        "no truth column; kind 'vf' or 'ee' at the end of the file name, e.g. 227vf.csv) take their\n"
+        "truth from a JSON array of booleans: --truth FILE.json, or found by name\n"
+        "(DIR/queries/227vf.csv -> DIR/mma_bool/227vf_mma_bool.json). Without one such a file is an\n"
+        "error, except with --answers (which needs no truth).\n";
     c.options = {
         kind_option("query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)"),
         choice_option("--method", "NAME", all_method_names(), "filtered",
@@ -31,6 +37,9 @@ const CommandSpec& command() {
                       "naive (textbook doubles), naive-tolerance (Bridson-style tolerance),\n"
                       "mpfr24, mpfr53, mpfr113, mpfr256 (textbook in MPFR)"),
         flag_option("--answers", "print only one line per query, 0 or 1, in file order"),
+        text_option("--truth", "FILE.json", "",
+                    "the truth of a query file without truth column (one FILE.csv only): a JSON\n"
+                    "array of booleans, one per query (default: found by name, see above)"),
         flag_option("--toi", "compute times of impact; with --answers each line is 0, or 1 LO HI: the\n"
                              "tightest doubles around the earliest time (17 significant digits)"),
         flag_option("--stats", "also print how many queries each stage of the filtered method decided"),
@@ -75,9 +84,14 @@ int run_check(int argc, char** argv) {
   if (json && answers) throw UsageError("check: --json and --answers exclude each other");
 
   // Parse everything first: a malformed file fails before anything is printed.
+  TruthSource truth;
+  truth.json = options.has("--truth") ? options.text("--truth") : "";
+  truth.required = !answers;
+  if (!truth.json.empty() && files.size() != 1)
+    throw UsageError("check: --truth FILE.json goes with one FILE.csv (" + std::to_string(files.size()) + " given)");
   std::vector<Dataset> datasets;
   for (const std::string& f : files) {
-    datasets.push_back(load_dataset(f, kind));
+    datasets.push_back(load_dataset(f, kind, truth));
     require_method_answers(method, datasets.back().kind, params);
     require_double_range(datasets.back(), method);
   }

@@ -1,5 +1,10 @@
 #include "cli_common.hpp"
 
+#include <cctype>
+#include <filesystem>
+
+#include "io/truth_json.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -79,7 +84,22 @@ std::optional<QueryKind> kind_from_path(const std::string& path) {
       best_at = at;
     }
   }
+  // The dataset's short names: the file name's stem ends in vf or ee, not after a letter.
+  const std::string stem = std::filesystem::path(path).stem().string();
+  if (stem.size() >= 2 && (stem.size() == 2 || !std::isalpha(static_cast<unsigned char>(stem[stem.size() - 3])))) {
+    const std::string suffix = stem.substr(stem.size() - 2);
+    const std::optional<QueryKind> k = suffix == "vf"   ? std::optional<QueryKind>(query_kind<kinds::VertexFace>())
+                                       : suffix == "ee" ? std::optional<QueryKind>(query_kind<kinds::EdgeEdge>())
+                                                        : std::nullopt;
+    const std::size_t at = path.size() - std::filesystem::path(path).filename().string().size() + stem.size() - 2;
+    if (k && (!best || at > best_at)) best = k;
+  }
   return best;
+}
+
+std::string truth_path_by_name(const std::string& csv_path) {
+  const std::filesystem::path p(csv_path);
+  return (p.parent_path().parent_path() / "mma_bool" / (p.stem().string() + "_mma_bool.json")).string();
 }
 
 const std::vector<tools::Method>& all_methods() {
@@ -118,7 +138,7 @@ tools::Method parse_method(const std::string& s) {
                    "' (expected filtered, exact, naive, naive-tolerance, mpfr24, mpfr53, mpfr113 or mpfr256)");
 }
 
-Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
+Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind, const TruthSource& truth) {
   if (!kind) kind = kind_from_path(path);
   if (!kind) {
     std::string names;
@@ -126,15 +146,40 @@ Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind) {
     throw UsageError("cannot infer the query kind of '" + path + "' (no " + names +
                      " in the path): pass --kind " + short_names("|"));
   }
+  io::QueryLayout layout = visit_kind(*kind, [](auto k) { return io::layout_of<decltype(k)>(); });
+  {
+    io::InputFile peek(path);
+    layout.truth_column = io::first_row_columns(peek.stream()) != 2 * layout.dimension;
+    peek.check_read();
+  }
   io::InputFile file(path);
   Dataset d;
   d.path = path;
   d.name = path;
   d.kind = *kind;
-  d.queries = io::read_benchmark_csv(file.stream(), path,
-                                     visit_kind(*kind, [](auto k) { return io::layout_of<decltype(k)>(); }));
+  d.queries = io::read_benchmark_csv(file.stream(), path, layout);
   file.check_read();
   if (d.queries.size() == 0) throw io::InputError(path, "no queries (an empty benchmark file)");
+  if (layout.truth_column && !truth.json.empty())
+    throw UsageError("--truth " + truth.json + ": " + path + " has its own truth column");
+  if (!layout.truth_column) {
+    const std::string by_name = truth_path_by_name(path);
+    std::error_code ec;
+    d.truth_path = !truth.json.empty() ? truth.json : std::filesystem::is_regular_file(by_name, ec) ? by_name : "";
+    if (d.truth_path.empty()) {
+      if (truth.required)
+        throw UsageError(path + " has no truth column (" + std::to_string(layout.columns()) +
+                         " columns) and no truth file (looked for " + by_name +
+                         "): pass --truth FILE.json, or --answers to print the answers only");
+      d.has_truth = false;
+    } else {
+      const std::vector<bool> t = io::read_truth_json_file(d.truth_path);
+      if (t.size() != d.queries.size())
+        throw io::InputError(d.truth_path, std::to_string(t.size()) + " truth values but " + path + " has " +
+                                               std::to_string(d.queries.size()) + " queries");
+      d.queries.truth = t;
+    }
+  }
   d.doubles.reserve(d.queries.size());
   for (const auto& rows : d.queries.rows) d.doubles.push_back(io::exact_double_rows(rows));
   return d;

@@ -93,7 +93,10 @@ OptionSpec kind_option(const std::string& help);
 std::optional<QueryKind> kind_of(const ParsedOptions& options);
 
 /// The kind whose long name ("vertex-face", "edge-edge", ...) occurs in a path, if any; when
-/// several occur, the one nearest the end of the path (the file name over its folders).
+/// several occur, the one nearest the end of the path (the file name over its folders). The
+/// Scalable CCD dataset's short names count too, as the end of the file name's stem not
+/// preceded by a letter: "queries/227vf.csv" is vertex-face, "227ee.csv" edge-edge
+/// ("coffee.csv" is neither).
 std::optional<QueryKind> kind_from_path(const std::string& path);
 
 /// Every method (tools::Method: the library's exact methods and the baselines), baselines
@@ -113,13 +116,36 @@ struct Dataset {
   io::BenchmarkQueries queries;
   /// Each query in doubles when all its coordinates are exact doubles.
   std::vector<std::optional<std::array<Vec3, 8>>> doubles;
+  /// Where queries.truth comes from: empty for the CSV's truth column, else the JSON file.
+  std::string truth_path;
+  /// False when the file has no truth column and no truth file was required (queries.truth is
+  /// then all false and must not be compared with).
+  bool has_truth = true;
 };
+
+/// Where the truth of a CSV without a truth column (the Scalable CCD dataset's 6-column query
+/// files) comes from.
+struct TruthSource {
+  /// A JSON array of booleans (--truth FILE.json); empty: the file found by name,
+  /// DIR/queries/NAME.csv -> DIR/mma_bool/NAME_mma_bool.json, when it exists.
+  std::string json;
+  /// Whether a file without truth column needs a truth file (false for --answers and compare).
+  bool required = true;
+};
+
+/// The truth file found by name for a query CSV: ../mma_bool/STEM_mma_bool.json beside the
+/// file's folder ("queries/227vf.csv" -> "mma_bool/227vf_mma_bool.json").
+std::string truth_path_by_name(const std::string& csv_path);
 
 /// Reads and parses a benchmark CSV. Throws UsageError when the kind is neither given nor in
 /// the path, io::InputError when the file is missing, a directory, unreadable or holds no
 /// query (an empty file is an error, never an empty answer), io::ParseError ("file:line:
-/// reason") when it is malformed. kind: explicit, or inferred from the path.
-Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind);
+/// reason") when it is malformed. kind: explicit, or inferred from the path. A file whose
+/// first row has no truth column (2 * dimension fields: the Scalable CCD dataset's query
+/// files) takes its truth from `truth` (io::read_truth_json_file; its count must be the
+/// file's query count); without a truth file it is a UsageError unless !truth.required.
+/// truth.json given for a file with a truth column is a UsageError.
+Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind, const TruthSource& truth = {});
 
 /// Throws io::ParseError naming the file and the row's line when `method` works in doubles (a
 /// baseline) and a coordinate of d rounds beyond the largest double (the baseline cannot take

@@ -117,7 +117,7 @@ int run_compare(int argc, char** argv) {
   if (options.positionals().size() > 1) throw UsageError("compare: one benchmark file at a time");
   if (options.positionals().empty()) throw UsageError("compare: needs --answers THEIRS.txt and FILE.csv");
   const std::string file = options.positionals()[0];
-  const Dataset d = load_dataset(file, kind);
+  const Dataset d = load_dataset(file, kind, TruthSource{"", false});  // no truth needed
   const CcdParams params = separation_params(options);
   const RationalCcdParams exact_params{mpq_class(params.min_distance), mpq_class(params.tmax)};
   const std::vector<TheirAnswer> theirs = read_answers(answers_path, with_toi);

@@ -1,4 +1,4 @@
-// exactccd scene: scene-level CCD of one time step given as two OBJ files; and the OBJ writer
+// exactccd scene: scene-level CCD of one time step given as two mesh files; and the OBJ writer
 // of `exactccd generate scene`.
 #include <cstdio>
 #include <filesystem>
@@ -40,8 +40,12 @@ const CommandSpec& command() {
         "collides when it comes within distance D at some t in [0, T] (exactly), and the largest\n"
         "collision-free step is T when no pair does.\n"
         "\n"
-        "Input: OBJ files (.obj), read strictly (README, \"Input files\"); PLY, OFF and STL files are\n"
-        "recognised and refused, as are files whose content does not match their extension.\n";
+        "Input: OBJ (.obj), PLY (.ply: ASCII or binary, either byte order, float or double x y z,\n"
+        "list faces), OFF (.off, ASCII) and STL (.stl, ASCII or binary; corners with exactly equal\n"
+        "coordinates are merged into one vertex), read strictly (README, \"Input files\"); float\n"
+        "coordinates are taken exactly. A file whose content does not match its extension is an\n"
+        "error. Indices are in file order (PLY, OFF: 0-based as in the file; STL: order of first\n"
+        "appearance).\n";
     c.options = {
         flag_option("--json",
                     "print one JSON object instead: vertices, triangles, candidates, vf_pairs\n"
@@ -59,7 +63,7 @@ const CommandSpec& command() {
   return spec;
 }
 
-/// The scene of two OBJ files, or UsageError when they are not the same mesh.
+/// The scene of two mesh files, or UsageError when they are not the same mesh.
 Scene scene_of(const std::string& path0, const io::ObjMesh& m0, const std::string& path1, const io::ObjMesh& m1) {
   if (m0.vertices.size() != m1.vertices.size())
     throw UsageError("scene: mismatched files: " + path0 + " has " + std::to_string(m0.vertices.size()) +
@@ -101,7 +105,7 @@ int run_scene(int argc, char** argv) {
   scene_options.min_distance = params.min_distance;
   scene_options.tmax = params.tmax;
   const std::vector<std::string>& files = options.positionals();
-  if (files.size() != 2) throw UsageError("scene: expected two files, T0.obj T1.obj (see exactccd scene --help)");
+  if (files.size() != 2) throw UsageError("scene: expected two files, T0 T1 (.obj, .ply, .off or .stl; see exactccd scene --help)");
   const io::TriangleMesh m0 = io::read_mesh(files[0]), m1 = io::read_mesh(files[1]);
   const Scene s = scene_of(files[0], m0, files[1], m1);
   try {
