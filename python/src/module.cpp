@@ -40,6 +40,12 @@ using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecas
 /// A C-contiguous int64 array.
 using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
+/// An array of type A (an array_t) of the given shape.
+template <class A>
+A shaped(std::vector<py::ssize_t> shape) {
+  return A(py::array::ShapeContainer(std::move(shape)));
+}
+
 std::string shape_string(const py::array& a) {
   std::string s = "(";
   for (py::ssize_t i = 0; i < a.ndim(); ++i) {
@@ -54,6 +60,7 @@ std::string dtype_string(const py::array& a) { return py::str(a.dtype()).cast<st
 
 /// `obj` as a NumPy array (lists and other array-likes are converted by NumPy).
 py::array as_array(const py::handle& obj, const std::string& name) {
+  if (obj.is_none()) throw py::value_error(name + " must be an array, not None");
   py::array a = py::array::ensure(obj);
   if (!a) {
     PyErr_Clear();
@@ -81,10 +88,10 @@ DoubleArray float_array(const py::handle& obj, const std::string& name, std::vec
 /// empty arrays of any dtype give an empty array.
 IndexArray index_array(const py::handle& obj, const std::string& name, py::ssize_t width) {
   const std::string expected = width > 0 ? "(n, " + std::to_string(width) + ")" : "(n,)";
-  if (obj.is_none()) return width > 0 ? IndexArray({py::ssize_t{0}, width}) : IndexArray(py::ssize_t{0});
+  if (obj.is_none()) return width > 0 ? shaped<IndexArray>({0, width}) : IndexArray(py::ssize_t{0});
   py::array a = as_array(obj, name);
   if (a.size() == 0 && (a.ndim() == 1 || (width > 0 && a.ndim() == 2 && a.shape(1) == width)))
-    return width > 0 ? IndexArray({py::ssize_t{0}, width}) : IndexArray(py::ssize_t{0});
+    return width > 0 ? shaped<IndexArray>({0, width}) : IndexArray(py::ssize_t{0});
   if (a.dtype().kind() != 'i' && a.dtype().kind() != 'u')
     throw py::value_error(name + " must be an integer array, not " + dtype_string(a));
   if (width > 0 ? (a.ndim() != 2 || a.shape(1) != width) : a.ndim() != 1)
@@ -204,7 +211,7 @@ struct Batch {
     const DoubleArray a = prepare(obj, params);
     const unsigned workers = to_threads(threads);
     const std::size_t n = static_cast<std::size_t>(a.shape(0));
-    py::array_t<double> out({static_cast<py::ssize_t>(n), py::ssize_t{2}});
+    auto out = shaped<py::array_t<double>>({static_cast<py::ssize_t>(n), 2});
     double* o = out.mutable_data();
     const double* in = a.data();
     {
@@ -304,8 +311,9 @@ SceneOptions make_options(double min_distance, double tmax, long long threads) {
 py::dict collisions_dict(const std::vector<Collision>& cs) {
   const auto k = static_cast<py::ssize_t>(cs.size());
   py::array_t<std::int8_t> kind(k);
-  IndexArray vertex(k), triangle(k), vertex_b(k), edge_a({k, py::ssize_t{2}}), edge_b({k, py::ssize_t{2}});
-  py::array_t<double> toi({k, py::ssize_t{2}});
+  IndexArray vertex(k), triangle(k), vertex_b(k);
+  auto edge_a = shaped<IndexArray>({k, 2}), edge_b = shaped<IndexArray>({k, 2});
+  auto toi = shaped<py::array_t<double>>({k, 2});
   for (std::size_t i = 0; i < cs.size(); ++i) {
     const Collision& c = cs[i];
     kind.mutable_data()[i] = static_cast<std::int8_t>(c.kind);
@@ -399,8 +407,8 @@ py::tuple read_mesh_py(const py::handle& path_obj) {
     mesh = io::read_mesh(path);
   }
   const auto n = static_cast<py::ssize_t>(mesh.vertices.size()), m = static_cast<py::ssize_t>(mesh.triangles.size());
-  py::array_t<double> v({n, py::ssize_t{3}});
-  IndexArray f({m, py::ssize_t{3}});
+  auto v = shaped<py::array_t<double>>({n, 3});
+  auto f = shaped<IndexArray>({m, 3});
   for (py::ssize_t i = 0; i < n; ++i) {
     const Vec3& x = mesh.vertices[static_cast<std::size_t>(i)];
     v.mutable_data()[3 * i] = x.x;
