@@ -169,16 +169,22 @@ struct Batch {
   /// The checked input and the parameters, validated by the library (its own messages): the
   /// parameters on an all-zero query, so that an empty batch refuses them too; the first row
   /// with a non-finite coordinate, prefixed with its index.
-  static DoubleArray prepare(const py::handle& obj, const CcdParams& params) {
+  static DoubleArray prepare(const py::handle& obj, const CcdParams& params, bool want_toi) {
     DoubleArray a = float_array(obj, "q", {-1, rows, dim}, expected());
-    (void)exactccd::ccd(Query{}, params);
+    const auto check = [&](const Query& q) {
+      if (want_toi)
+        (void)exactccd::toi(q, params);
+      else
+        (void)exactccd::ccd(q, params);
+    };
+    check(Query{});
     const double* data = a.data();
     const std::size_t n = static_cast<std::size_t>(a.shape(0));
     for (std::size_t i = 0; i < n; ++i) {
       for (int k = 0; k < stride; ++k) {
         if (std::isfinite(data[i * stride + k])) continue;
         try {
-          (void)exactccd::ccd(query(data + i * stride), params);
+          check(query(data + i * stride));
         } catch (const std::invalid_argument& e) {
           throw std::invalid_argument("q[" + std::to_string(i) + "]: " + e.what());
         }
@@ -190,7 +196,7 @@ struct Batch {
 
   static py::array_t<bool> ccd(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
-    const DoubleArray a = prepare(obj, params);
+    const DoubleArray a = prepare(obj, params, false);
     const unsigned workers = to_threads(threads);
     const std::size_t n = static_cast<std::size_t>(a.shape(0));
     py::array_t<bool> out(static_cast<py::ssize_t>(n));
@@ -208,7 +214,7 @@ struct Batch {
 
   static py::array_t<double> toi(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
-    const DoubleArray a = prepare(obj, params);
+    const DoubleArray a = prepare(obj, params, true);
     const unsigned workers = to_threads(threads);
     const std::size_t n = static_cast<std::size_t>(a.shape(0));
     auto out = shaped<py::array_t<double>>({static_cast<py::ssize_t>(n), 2});

@@ -124,3 +124,26 @@ def test_non_contiguous_and_list_input():
     assert np.array_equal(fn(kind, "toi")(np.asfortranarray(q)), want, equal_nan=True)
     assert np.array_equal(fn(kind, "toi")(q[::2]), want[::2], equal_nan=True)
     assert np.array_equal(fn(kind, "toi")(q[:3].tolist()), want[:3], equal_nan=True)
+
+
+def test_gil_is_released():
+    import threading
+    import time
+
+    path = bundled_files()[0]
+    kind = kind_of_file(path)
+    q, _ = read_queries(path, kind)
+    big = np.tile(q, (400, 1, 1))
+    start = time.perf_counter()
+    fn(kind, "toi")(big, min_distance=0.01, threads=1)
+    alone = time.perf_counter() - start
+    if alone < 0.1:
+        pytest.skip(f"the batch takes {alone:.3f} s: too short to tell")
+    worker = threading.Thread(target=lambda: fn(kind, "toi")(big, min_distance=0.01, threads=1))
+    ticks = 0
+    worker.start()
+    while worker.is_alive():
+        ticks += 1  # runs only while the batch does not hold the GIL
+        time.sleep(0.001)
+    worker.join()
+    assert ticks >= 20, (ticks, alone)  # holding the GIL would allow about one
