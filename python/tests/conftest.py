@@ -93,3 +93,14 @@ def cli_answers(path, kind, min_distance=None, tmax=None):
         answers.append(parts[0] == "1")
         tois.append([float(parts[1]), float(parts[2])] if parts[0] == "1" else [np.nan, np.nan])
     return np.array(answers, dtype=bool), np.array(tois, dtype=np.float64).reshape(-1, 2)
+
+
+SAMPLE_QUERIES = pathlib.Path(os.environ.get("EXACTCCD_SAMPLE_QUERIES_DIR", ROOT.parent / "shared" / "data" / "sample-queries"))
+
+
+def shared_files():
+    """(path, kind) of the shared benchmark sample's query files (none when it is absent)."""
+    out = []
+    for kind in ("vertex_face", "edge_edge"):
+        out += [(p, kind) for p in sorted(SAMPLE_QUERIES.glob(f"**/{KINDS[kind][0]}/*.csv"))]
+    return out

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import exactccd
-from conftest import KINDS, bundled_files, cli_answers, kind_of_file, read_queries
+from conftest import SAMPLE_QUERIES, KINDS, bundled_files, cli_answers, kind_of_file, read_queries, shared_files
 
 NAN2 = [np.nan, np.nan]
 
@@ -147,3 +147,12 @@ def test_gil_is_released():
         time.sleep(0.001)
     worker.join()
     assert ticks >= 20, (ticks, alone)  # holding the GIL would allow about one
+
+
+@pytest.mark.skipif(not shared_files(), reason=f"the shared benchmark sample is absent ({SAMPLE_QUERIES})")
+@pytest.mark.parametrize("path,kind", shared_files(), ids=lambda v: getattr(v, "name", v))
+def test_shared_sample_equals_cli(path, kind):
+    q, _ = read_queries(path, kind)
+    want_answers, want_tois = cli_answers(path, kind)
+    assert np.array_equal(fn(kind, "ccd")(q), want_answers)
+    assert np.array_equal(fn(kind, "toi")(q), want_tois, equal_nan=True)
