@@ -7,6 +7,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
   libgtest-dev libbenchmark-dev libeigen3-dev doxygen
   python3-matplotlib
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis
   clang libclang-rt-dev
 )
 

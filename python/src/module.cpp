@@ -1,0 +1,508 @@
+// The Python module exactccd._exactccd (python/exactccd/__init__.py re-exports it): NumPy batch
+// functions over every primitive kind (one template over lib/kinds, never a copy per kind), the
+// scene functions on arrays, and the mesh reader. The GIL is released while the library works;
+// batches are spread over threads with the scene narrow phase's pool (lib/scene/parallel.hpp).
+//
+// Errors: the library's std::invalid_argument becomes ValueError (pybind11's own translation),
+// with the message unchanged; the bindings' checks of shapes and dtypes raise ValueError too;
+// the mesh reader's io::InputError (file:line errors) becomes ValueError, a missing file
+// FileNotFoundError.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "exactccd/ccd.hpp"
+#include "exactccd/scene.hpp"
+#include "exactccd/types.hpp"
+#include "io/input_file.hpp"
+#include "io/mesh_file.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "scene/parallel.hpp"
+
+namespace py = pybind11;
+
+namespace exactccd::python {
+namespace {
+
+/// A C-contiguous float64 array.
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+/// A C-contiguous int64 array.
+using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+/// An array of type A (an array_t) of the given shape.
+template <class A>
+A shaped(std::vector<py::ssize_t> shape) {
+  return A(py::array::ShapeContainer(std::move(shape)));
+}
+
+std::string shape_string(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) {
+    if (i > 0) s += ", ";
+    s += std::to_string(a.shape(i));
+  }
+  if (a.ndim() == 1) s += ",";
+  return s + ")";
+}
+
+std::string dtype_string(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+
+/// `obj` as a NumPy array (lists and other array-likes are converted by NumPy).
+py::array as_array(const py::handle& obj, const std::string& name) {
+  if (obj.is_none()) throw py::value_error(name + " must be an array, not None");
+  py::array a = py::array::ensure(obj);
+  if (!a) {
+    PyErr_Clear();
+    throw py::value_error(name + " must be an array, not " +
+                          py::str(py::type::handle_of(obj).attr("__name__")).cast<std::string>());
+  }
+  return a;
+}
+
+/// `obj` as a C-contiguous float64 array of `ndim` dimensions whose trailing dimensions are
+/// `tail` (-1: any). Only float64 is accepted: coordinates are taken exactly, never converted.
+DoubleArray float_array(const py::handle& obj, const std::string& name, std::vector<py::ssize_t> shape,
+                        const std::string& expected) {
+  py::array a = as_array(obj, name);
+  if (a.dtype().kind() != 'f' || a.itemsize() != 8)
+    throw py::value_error(name + " must be a float64 array, not " + dtype_string(a) +
+                          " (convert with numpy.asarray(" + name + ", dtype=numpy.float64))");
+  bool ok = a.ndim() == static_cast<py::ssize_t>(shape.size());
+  for (std::size_t i = 0; ok && i < shape.size(); ++i) ok = shape[i] < 0 || a.shape(i) == shape[i];
+  if (!ok) throw py::value_error(name + " must have shape " + expected + ", not " + shape_string(a));
+  return DoubleArray::ensure(a);
+}
+
+/// `obj` as a C-contiguous int64 array of shape (n, width) (width 0: shape (n,)); None and
+/// empty arrays of any dtype give an empty array.
+IndexArray index_array(const py::handle& obj, const std::string& name, py::ssize_t width) {
+  const std::string expected = width > 0 ? "(n, " + std::to_string(width) + ")" : "(n,)";
+  if (obj.is_none()) return width > 0 ? shaped<IndexArray>({0, width}) : IndexArray(py::ssize_t{0});
+  py::array a = as_array(obj, name);
+  if (a.size() == 0 && (a.ndim() == 1 || (width > 0 && a.ndim() == 2 && a.shape(1) == width)))
+    return width > 0 ? shaped<IndexArray>({0, width}) : IndexArray(py::ssize_t{0});
+  if (a.dtype().kind() != 'i' && a.dtype().kind() != 'u')
+    throw py::value_error(name + " must be an integer array, not " + dtype_string(a));
+  if (width > 0 ? (a.ndim() != 2 || a.shape(1) != width) : a.ndim() != 1)
+    throw py::value_error(name + " must have shape " + expected + ", not " + shape_string(a));
+  if (a.dtype().kind() == 'u' && a.itemsize() == 8) {  // values above 2^63 would wrap
+    auto u = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(a);
+    for (py::ssize_t i = 0; i < u.size(); ++i)
+      if (u.data()[i] > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+        throw py::value_error(name + ": index " + std::to_string(u.data()[i]) + " is out of range");
+  }
+  return IndexArray::ensure(a);
+}
+
+int to_index(std::int64_t v, const std::string& name) {
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    throw py::value_error(name + ": index " + std::to_string(v) + " is out of range");
+  return static_cast<int>(v);
+}
+
+template <std::size_t W>
+std::vector<std::array<int, W>> to_tuples(const IndexArray& a, const std::string& name) {
+  std::vector<std::array<int, W>> out(static_cast<std::size_t>(a.size()) / W);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (std::size_t k = 0; k < W; ++k) out[i][k] = to_index(a.data()[i * W + k], name);
+  return out;
+}
+
+std::vector<int> to_ints(const IndexArray& a, const std::string& name) {
+  std::vector<int> out(static_cast<std::size_t>(a.size()));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = to_index(a.data()[i], name);
+  return out;
+}
+
+unsigned to_threads(long long threads) {
+  if (threads < 0) throw py::value_error("threads must be >= 0 (0: every hardware thread), not " + std::to_string(threads));
+  return scene::resolve_threads(static_cast<unsigned>(std::min<long long>(threads, scene::kMaxThreads)));
+}
+
+/// Keeps the names and docstrings of the generated functions alive for the interpreter's life.
+const char* keep(std::string s) {
+  static std::deque<std::string> strings;
+  strings.push_back(std::move(s));
+  return strings.back().c_str();
+}
+
+// --- batch functions, one template over the kinds --------------------------------------------
+
+/// Queries per chunk of the thread pool: small enough to balance queries of very different
+/// cost (an exact fallback costs 100x a filtered answer), large enough to amortise the hand-out.
+constexpr std::size_t kChunk = 64;
+
+template <class Kind>
+struct Batch {
+  using Query = typename Kind::template Query<double>;
+  static constexpr int rows = 2 * Kind::points;
+  static constexpr int dim = Kind::dimension;
+  static constexpr int stride = rows * dim;
+
+  static Query query(const double* p) {
+    if constexpr (dim == 3) {
+      std::array<Vec3, rows> r;
+      for (int i = 0; i < rows; ++i) r[i] = Vec3{p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+      return from_rows<Query>(r);
+    } else {
+      std::array<Vec2, rows> r;
+      for (int i = 0; i < rows; ++i) r[i] = Vec2{p[2 * i], p[2 * i + 1]};
+      return from_rows<Query>(r);
+    }
+  }
+
+  static std::string expected() {
+    return "(N, " + std::to_string(rows) + ", " + std::to_string(dim) + ")";
+  }
+
+  /// The checked input and the parameters, validated by the library (its own messages): the
+  /// parameters on an all-zero query, so that an empty batch refuses them too; the first row
+  /// with a non-finite coordinate, prefixed with its index.
+  static DoubleArray prepare(const py::handle& obj, const CcdParams& params, bool want_toi) {
+    DoubleArray a = float_array(obj, "q", {-1, rows, dim}, expected());
+    const auto check = [&](const Query& q) {
+      if (want_toi)
+        (void)exactccd::toi(q, params);
+      else
+        (void)exactccd::ccd(q, params);
+    };
+    check(Query{});
+    const double* data = a.data();
+    const std::size_t n = static_cast<std::size_t>(a.shape(0));
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < stride; ++k) {
+        if (std::isfinite(data[i * stride + k])) continue;
+        try {
+          check(query(data + i * stride));
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument("q[" + std::to_string(i) + "]: " + e.what());
+        }
+        throw std::invalid_argument("q[" + std::to_string(i) + "]: non-finite coordinate");
+      }
+    }
+    return a;
+  }
+
+  static py::array_t<bool> ccd(const py::handle& obj, double min_distance, double tmax, long long threads) {
+    const CcdParams params{min_distance, tmax};
+    const DoubleArray a = prepare(obj, params, false);
+    const unsigned workers = to_threads(threads);
+    const std::size_t n = static_cast<std::size_t>(a.shape(0));
+    py::array_t<bool> out(static_cast<py::ssize_t>(n));
+    bool* o = out.mutable_data();
+    const double* in = a.data();
+    {
+      py::gil_scoped_release release;
+      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
+        for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(query(in + i * stride), params);
+        return true;
+      });
+    }
+    return out;
+  }
+
+  static py::array_t<double> toi(const py::handle& obj, double min_distance, double tmax, long long threads) {
+    const CcdParams params{min_distance, tmax};
+    const DoubleArray a = prepare(obj, params, true);
+    const unsigned workers = to_threads(threads);
+    const std::size_t n = static_cast<std::size_t>(a.shape(0));
+    auto out = shaped<py::array_t<double>>({static_cast<py::ssize_t>(n), 2});
+    double* o = out.mutable_data();
+    const double* in = a.data();
+    {
+      py::gil_scoped_release release;
+      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
+        for (std::size_t i = begin; i < end; ++i) {
+          const std::optional<TimeInterval> t = exactccd::toi(query(in + i * stride), params);
+          o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
+          o[2 * i + 1] = t ? t->hi : std::numeric_limits<double>::quiet_NaN();
+        }
+        return true;
+      });
+    }
+    return out;
+  }
+
+  static void define(py::module_& m) {
+    const std::string stem(Kind::function), name(Kind::name);
+    std::string points;
+    for (int t = 0; t < 2; ++t)
+      for (std::string_view p : Kind::point_names) points += (points.empty() ? "" : ", ") + std::string(p) + "_t" + std::to_string(t);
+    const std::string shape = expected();
+    const std::string common =
+        "q: float64 array of shape " + shape + ", one query per row block, points in file row order (" +
+        points + ").\nmin_distance: d, finite and >= 0; a query collides iff some t in [0, tmax] puts its two "
+        "closed primitives within distance <= d (0: contact).\ntmax: the time limit, in (0, 1].\nthreads: "
+        "worker threads (0: every hardware thread); the answers do not depend on it.\n"
+        "The GIL is released during the work. Raises ValueError (the library's message) for a wrong shape "
+        "or dtype, a NaN or infinite coordinate (naming the row), or a bad min_distance or tmax.";
+    m.def(keep(stem + "_ccd"), &Batch::ccd, py::arg("q"), py::arg("min_distance") = 0.0, py::arg("tmax") = 1.0,
+          py::arg("threads") = 0,
+          keep("Exact " + name + " CCD of a batch: an (N,) bool array, True where the query collides.\n\n" + common));
+    m.def(keep(stem + "_toi"), &Batch::toi, py::arg("q"), py::arg("min_distance") = 0.0, py::arg("tmax") = 1.0,
+          py::arg("threads") = 0,
+          keep("Exact " + name + " time of impact of a batch: an (N, 2) float64 array of [lo, hi], the tightest "
+               "double interval holding the earliest t in [0, tmax] at which the primitives are within "
+               "min_distance (lo == hi when that time is a double); NaN rows where there is no collision.\n\n" +
+               common));
+  }
+};
+
+// --- scenes ----------------------------------------------------------------------------------
+
+/// A 3D or 2D scene from arrays.
+struct SceneInput {
+  bool planar = false;
+  Scene s3;
+  Scene2d s2;
+};
+
+SceneInput make_scene(const py::handle& v0_obj, const py::handle& v1_obj, const py::handle& f_obj,
+                      const py::handle& e_obj, const py::handle& p_obj) {
+  py::array v0a = as_array(v0_obj, "V0");
+  const py::ssize_t d = v0a.ndim() == 2 ? v0a.shape(1) : 3;
+  if (d != 2 && d != 3) throw py::value_error("V0 must have shape (n, 3) or (n, 2), not " + shape_string(v0a));
+  const std::string expected = d == 3 ? "(n, 3)" : "(n, 2)";
+  const DoubleArray v0 = float_array(v0a, "V0", {-1, d}, expected);
+  const DoubleArray v1 = float_array(v1_obj, "V1", {-1, d}, expected);
+  if (v0.shape(0) != v1.shape(0))
+    throw py::value_error("V0 and V1 must have the same shape, not " + shape_string(v0) + " and " + shape_string(v1));
+  SceneInput s;
+  s.planar = d == 2;
+  const std::size_t n = static_cast<std::size_t>(v0.shape(0));
+  const IndexArray f = index_array(f_obj, "F", 3), e = index_array(e_obj, "E", 2), p = index_array(p_obj, "P", 0);
+  if (s.planar) {
+    if (f.size() != 0) throw py::value_error("F: a 2D scene (V0 of shape (n, 2)) has no triangles; pass edges as E");
+    s.s2.positions_t0.resize(n);
+    s.s2.positions_t1.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      s.s2.positions_t0[i] = Vec2{v0.data()[2 * i], v0.data()[2 * i + 1]};
+      s.s2.positions_t1[i] = Vec2{v1.data()[2 * i], v1.data()[2 * i + 1]};
+    }
+    s.s2.edges = to_tuples<2>(e, "E");
+    s.s2.points = to_ints(p, "P");
+  } else {
+    s.s3.positions_t0.resize(n);
+    s.s3.positions_t1.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      s.s3.positions_t0[i] = Vec3{v0.data()[3 * i], v0.data()[3 * i + 1], v0.data()[3 * i + 2]};
+      s.s3.positions_t1[i] = Vec3{v1.data()[3 * i], v1.data()[3 * i + 1], v1.data()[3 * i + 2]};
+    }
+    s.s3.triangles = to_tuples<3>(f, "F");
+    s.s3.edges = to_tuples<2>(e, "E");
+    s.s3.points = to_ints(p, "P");
+  }
+  return s;
+}
+
+SceneOptions make_options(double min_distance, double tmax, long long threads) {
+  SceneOptions o;
+  o.threads = to_threads(threads);
+  o.min_distance = min_distance;
+  o.tmax = tmax;
+  return o;
+}
+
+py::dict collisions_dict(const std::vector<Collision>& cs) {
+  const auto k = static_cast<py::ssize_t>(cs.size());
+  py::array_t<std::int8_t> kind(k);
+  IndexArray vertex(k), triangle(k), vertex_b(k);
+  auto edge_a = shaped<IndexArray>({k, 2}), edge_b = shaped<IndexArray>({k, 2});
+  auto toi = shaped<py::array_t<double>>({k, 2});
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    const Collision& c = cs[i];
+    kind.mutable_data()[i] = static_cast<std::int8_t>(c.kind);
+    vertex.mutable_data()[i] = c.vertex;
+    triangle.mutable_data()[i] = c.triangle;
+    vertex_b.mutable_data()[i] = c.vertex_b;
+    for (int j = 0; j < 2; ++j) {
+      edge_a.mutable_data()[2 * i + j] = c.edge_a[j];
+      edge_b.mutable_data()[2 * i + j] = c.edge_b[j];
+    }
+    toi.mutable_data()[2 * i] = c.toi.lo;
+    toi.mutable_data()[2 * i + 1] = c.toi.hi;
+  }
+  py::dict d;
+  d["kind"] = kind;
+  d["vertex"] = vertex;
+  d["triangle"] = triangle;
+  d["edge_a"] = edge_a;
+  d["edge_b"] = edge_b;
+  d["vertex_b"] = vertex_b;
+  d["toi"] = toi;
+  return d;
+}
+
+py::dict find_collisions_py(const py::handle& v0, const py::handle& v1, const py::handle& f, const py::handle& e,
+                            const py::handle& p, double min_distance, double tmax, long long threads) {
+  const SceneInput s = make_scene(v0, v1, f, e, p);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  std::vector<Collision> cs;
+  {
+    py::gil_scoped_release release;
+    cs = s.planar ? find_collisions(s.s2, o) : find_collisions(s.s3, o);
+  }
+  return collisions_dict(cs);
+}
+
+std::optional<std::pair<double, double>> earliest_toi_py(const py::handle& v0, const py::handle& v1,
+                                                         const py::handle& f, const py::handle& e,
+                                                         const py::handle& p, double min_distance, double tmax,
+                                                         long long threads) {
+  const SceneInput s = make_scene(v0, v1, f, e, p);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  std::optional<TimeInterval> t;
+  {
+    py::gil_scoped_release release;
+    t = s.planar ? earliest_toi(s.s2, o) : earliest_toi(s.s3, o);
+  }
+  if (!t) return std::nullopt;
+  return std::make_pair(t->lo, t->hi);
+}
+
+bool is_collision_free_py(const py::handle& v0, const py::handle& v1, const py::handle& f, const py::handle& e,
+                          const py::handle& p, double min_distance, double tmax, long long threads) {
+  const SceneInput s = make_scene(v0, v1, f, e, p);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  py::gil_scoped_release release;
+  return s.planar ? is_collision_free(s.s2, o) : is_collision_free(s.s3, o);
+}
+
+double max_collision_free_step_py(const py::handle& v0, const py::handle& v1, const py::handle& f,
+                                  const py::handle& e, const py::handle& p, double min_distance, double tmax,
+                                  long long threads) {
+  const SceneInput s = make_scene(v0, v1, f, e, p);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  py::gil_scoped_release release;
+  return s.planar ? max_collision_free_step(s.s2, o) : max_collision_free_step(s.s3, o);
+}
+
+bool intersection_free_py(const py::handle& v_obj, const py::handle& f_obj) {
+  const DoubleArray v = float_array(v_obj, "V", {-1, 3}, "(n, 3)");
+  const IndexArray f = index_array(f_obj, "F", 3);
+  std::vector<Vec3> positions(static_cast<std::size_t>(v.shape(0)));
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    positions[i] = Vec3{v.data()[3 * i], v.data()[3 * i + 1], v.data()[3 * i + 2]};
+  const auto triangles = to_tuples<3>(f, "F");
+  py::gil_scoped_release release;
+  return intersection_free(positions, triangles);
+}
+
+py::tuple read_mesh_py(const py::handle& path_obj) {
+  const std::string path = py::module_::import("os").attr("fspath")(path_obj).cast<std::string>();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    PyErr_SetObject(PyExc_FileNotFoundError,
+                    py::make_tuple(2, "No such file or directory", path).ptr());  // errno ENOENT
+    throw py::error_already_set();
+  }
+  io::TriangleMesh mesh;
+  {
+    py::gil_scoped_release release;
+    mesh = io::read_mesh(path);
+  }
+  const auto n = static_cast<py::ssize_t>(mesh.vertices.size()), m = static_cast<py::ssize_t>(mesh.triangles.size());
+  auto v = shaped<py::array_t<double>>({n, 3});
+  auto f = shaped<IndexArray>({m, 3});
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const Vec3& x = mesh.vertices[static_cast<std::size_t>(i)];
+    v.mutable_data()[3 * i] = x.x;
+    v.mutable_data()[3 * i + 1] = x.y;
+    v.mutable_data()[3 * i + 2] = x.z;
+  }
+  for (py::ssize_t i = 0; i < m; ++i)
+    for (int k = 0; k < 3; ++k) f.mutable_data()[3 * i + k] = mesh.triangles[static_cast<std::size_t>(i)][k];
+  return py::make_tuple(v, f);
+}
+
+constexpr const char* kSceneArgs =
+    "V0, V1: float64 arrays of shape (n, 3) (or (n, 2) for a 2D scene), the vertex positions at t = 0 "
+    "and t = 1.\nF: integer array (m, 3) of triangles (0-based; None or empty in 2D).\nE: integer array "
+    "(k, 2) of extra edges (3D: codimensional edges; 2D: the edges), or None.\nP: integer array (p,) of "
+    "points, or None.\nmin_distance: d, finite and >= 0 (0: contact).\ntmax: the time limit, in (0, 1].\n"
+    "threads: narrow-phase threads (0: every hardware thread); the result does not depend on it.\n"
+    "The GIL is released during the work. Raises ValueError (the library's message) for a malformed "
+    "scene (shapes, dtypes, NaN or infinite coordinates, indices out of range or repeated) or bad options.";
+
+}  // namespace
+}  // namespace exactccd::python
+
+PYBIND11_MODULE(_exactccd, m) {
+  using namespace exactccd;
+  using namespace exactccd::python;
+  m.doc() = "Exact continuous collision detection (the C++ library exactccd): NumPy batch functions per "
+            "primitive kind, scene functions on arrays, and the mesh reader.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const io::InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  kinds::for_each_separation_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
+
+  m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);
+  m.attr("EDGE_EDGE") = static_cast<int>(CollisionKind::edge_edge);
+  m.attr("POINT_EDGE") = static_cast<int>(CollisionKind::point_edge);
+  m.attr("POINT_POINT") = static_cast<int>(CollisionKind::point_point);
+  m.attr("KIND_NAMES") = py::make_tuple("vertex-face", "edge-edge", "point-edge", "point-point");
+
+  const std::string args = kSceneArgs;
+  m.def("find_collisions", &find_collisions_py, py::arg("V0"), py::arg("V1"), py::arg("F") = py::none(),
+        py::arg("E") = py::none(), py::arg("P") = py::none(), py::arg("min_distance") = 0.0,
+        py::arg("tmax") = 1.0, py::arg("threads") = 0,
+        keep("Every colliding pair of the scene and its time of impact, as a dict of arrays, one entry per "
+             "pair, in the library's order (by kind, then by indices):\n"
+             "  kind: int8 (k,), VERTEX_FACE=0, EDGE_EDGE=1, POINT_EDGE=2, POINT_POINT=3 (KIND_NAMES);\n"
+             "  vertex: int64 (k,), the vertex (vertex-face) or the (first) point (point-edge, point-point), "
+             "else -1;\n"
+             "  triangle: int64 (k,), the triangle's index in F (vertex-face), else -1;\n"
+             "  edge_a: int64 (k, 2), the first edge (edge-edge) or the edge (point-edge), ascending "
+             "vertex indices, else [-1, -1];\n"
+             "  edge_b: int64 (k, 2), the second edge (edge-edge), else [-1, -1];\n"
+             "  vertex_b: int64 (k,), the second point (point-point), else -1;\n"
+             "  toi: float64 (k, 2), [lo, hi], the tightest double interval holding the exact time of "
+             "impact.\nIn 3D, point-edge and point-point pairs are reported only for min_distance > 0; in 2D "
+             "the kinds are edge-edge, point-edge and point-point.\n\n" +
+             args));
+  m.def("earliest_toi", &earliest_toi_py, py::arg("V0"), py::arg("V1"), py::arg("F") = py::none(),
+        py::arg("E") = py::none(), py::arg("P") = py::none(), py::arg("min_distance") = 0.0,
+        py::arg("tmax") = 1.0, py::arg("threads") = 0,
+        keep("The scene's earliest time of impact as (lo, hi), the tightest double interval holding the exact "
+             "earliest time in [0, tmax] at which some pair is within min_distance, or None.\n\n" +
+             args));
+  m.def("is_collision_free", &is_collision_free_py, py::arg("V0"), py::arg("V1"), py::arg("F") = py::none(),
+        py::arg("E") = py::none(), py::arg("P") = py::none(), py::arg("min_distance") = 0.0,
+        py::arg("tmax") = 1.0, py::arg("threads") = 0,
+        keep("True iff no pair of the scene comes within min_distance at some t in [0, tmax].\n\n" + args));
+  m.def("max_collision_free_step", &max_collision_free_step_py, py::arg("V0"), py::arg("V1"),
+        py::arg("F") = py::none(), py::arg("E") = py::none(), py::arg("P") = py::none(),
+        py::arg("min_distance") = 0.0, py::arg("tmax") = 1.0, py::arg("threads") = 0,
+        keep("The largest step s <= tmax keeping every pair at distance > min_distance: tmax when no pair "
+             "collides, else the largest double strictly below the earliest TOI's lo (0 for a collision at "
+             "t = 0).\n\n" +
+             args));
+  m.def("intersection_free", &intersection_free_py, py::arg("V"), py::arg("F"),
+        "Exact static self-intersection check of a triangle mesh: True iff triangles sharing no vertex index "
+        "are disjoint and triangles sharing one vertex meet only there (see exactccd/scene.hpp).\n\n"
+        "V: float64 array (n, 3); F: integer array (m, 3). Raises ValueError for NaN or infinite "
+        "coordinates, out-of-range or repeated indices.");
+  m.def("read_mesh", &read_mesh_py, py::arg("path"),
+        "The triangle mesh in the file at path, as (V, F): V a float64 array (n, 3) of positions (read "
+        "exactly), F an int64 array (m, 3) of 0-based triangles (polygons fan-triangulated). The format "
+        "comes from the extension and the content, which must agree (the formats the library reads; see "
+        "the README). Raises FileNotFoundError for a missing file and ValueError with the library's "
+        "message (\"<path>:<line>: <reason>\") for an unreadable, unsupported or malformed file.");
+}
