@@ -46,20 +46,20 @@ exactccd_status exactccd_vertex_face_toi(const double query[24], int* collides, 
 exactccd_status exactccd_edge_edge_toi(const double query[24], int* collides, double* lo,
                                        double* hi);
 
-/* The number of doubles of a query of `kind`: every point at t0, then every point at t1, with
- * 3 (or, for the 2D kinds, 2) coordinates each; 0 for an unknown kind. */
-int exactccd_query_size(exactccd_kind kind);
+/* The number of doubles of a query of `kind` (an exactccd_kind value; an int, so that any value
+ * a foreign caller passes is defined): every point at t0, then every point at t1, with 3 (or,
+ * for the 2D kinds, 2) coordinates each; 0 for an unknown kind. */
+int exactccd_query_size(int kind);
 
 /* Minimum separation and a time limit, any kind: *collides = 1 when the primitives come within
  * distance min_distance (>= 0) of each other at some t in [0, tmax] (tmax in (0, 1]), else 0.
  * min_distance = 0, tmax = 1 is the question of the functions above. */
-exactccd_status exactccd_ccd(exactccd_kind kind, const double* query, double min_distance, double tmax,
-                             int* collides);
+exactccd_status exactccd_ccd(int kind, const double* query, double min_distance, double tmax, int* collides);
 
 /* As exactccd_ccd, with the earliest such t in [*lo, *hi] when *collides is 1 (the tightest
  * double interval; [0, 0] when the initial distance is <= min_distance). */
-exactccd_status exactccd_toi(exactccd_kind kind, const double* query, double min_distance, double tmax,
-                             int* collides, double* lo, double* hi);
+exactccd_status exactccd_toi(int kind, const double* query, double min_distance, double tmax, int* collides,
+                             double* lo, double* hi);
 
 /* A static description of a status, e.g. for error messages. */
 const char* exactccd_status_string(exactccd_status status);

@@ -61,11 +61,11 @@ std::optional<Query> read_any_query(const double* q) {
 /// Calls f(Kind{}) for the kind with the C enum value `kind` (for_each_separation_kind's
 /// order); false for an unknown value.
 template <class F>
-bool visit_c_kind(exactccd_kind kind, F&& f) {
+bool visit_c_kind(int kind, F&& f) {
   int i = 0;
   bool found = false;
   kinds::for_each_separation_kind([&](auto k) {
-    if (i++ == static_cast<int>(kind)) {
+    if (i++ == kind) {
       f(k);
       found = true;
     }
@@ -73,7 +73,7 @@ bool visit_c_kind(exactccd_kind kind, F&& f) {
   return found;
 }
 
-exactccd_status separation_impl(exactccd_kind kind, const double* query, double d, double tmax, bool want_toi,
+exactccd_status separation_impl(int kind, const double* query, double d, double tmax, bool want_toi,
                                 int* collides, double* lo, double* hi) {
   if (!query || !collides) return EXACTCCD_ERROR_NULL;
   const filter::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
@@ -105,19 +105,18 @@ exactccd_status separation_impl(exactccd_kind kind, const double* query, double 
 
 extern "C" {
 
-int exactccd_query_size(exactccd_kind kind) {
+int exactccd_query_size(int kind) {
   int size = 0;
   visit_c_kind(kind, [&](auto k) { size = 2 * decltype(k)::points * decltype(k)::dimension; });
   return size;
 }
 
-exactccd_status exactccd_ccd(exactccd_kind kind, const double* query, double min_distance, double tmax,
-                             int* collides) {
+exactccd_status exactccd_ccd(int kind, const double* query, double min_distance, double tmax, int* collides) {
   return separation_impl(kind, query, min_distance, tmax, false, collides, nullptr, nullptr);
 }
 
-exactccd_status exactccd_toi(exactccd_kind kind, const double* query, double min_distance, double tmax,
-                             int* collides, double* lo, double* hi) {
+exactccd_status exactccd_toi(int kind, const double* query, double min_distance, double tmax, int* collides,
+                             double* lo, double* hi) {
   return separation_impl(kind, query, min_distance, tmax, true, collides, lo, hi);
 }
 
