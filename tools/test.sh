@@ -34,9 +34,14 @@ if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
   # The package test installs and builds a consumer without sanitizers: covered above. The two
   # longest CLI runs (fuzz-against with shrinking, generate/check on the wide families: over 3
   # minutes together under ASan) run in the Release pass only, to keep CI under 30 minutes;
-  # fuzz-against's plug-in loading and shrinking are then not run under the sanitizers.
+  # fuzz-against's plug-in loading and shrinking are then not run under the sanitizers. Likewise
+  # the two longest minimum-separation property runs (near queries checked with CGAL's
+  # constructions, every bundled file at four distances: about 110 s under ASan); the separation
+  # code runs under the sanitizers in test_min_separation, the catalogue and the other
+  # MinSeparationCgal tests.
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --test-dir build-asan --output-on-failure -j"$jobs" -E '^(package\.|cli\.(fuzz_against|families_wide)$)'
+    ctest --test-dir build-asan --output-on-failure -j"$jobs" \
+      -E '^(package\.|cli\.(fuzz_against|families_wide)$|MinSeparationCgal\.NearQueries$|MinSeparationData\.)'
 fi
 
 if [ "${EXACTCCD_SKIP_FUZZERS:-0}" != "1" ]; then
