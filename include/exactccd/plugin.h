@@ -30,7 +30,7 @@
  *     int exactccd_plugin_vf_toi(const double q[24], double* toi);
  *     int exactccd_plugin_ee_toi(const double q[24], double* toi);
  *
- * returning 1 and its time of impact in `*toi` when its code reports a collision, 0 when it
+ * returning 1 and its time of impact in `toi[0]` when its code reports a collision, 0 when it
  * reports none. When the symbol of the requested kind is present, `fuzz-against` calls it
  * instead of the answer-only one and also checks, for every collision both find, that the time
  * is safe (`toi <=` the exact TOI: a step to it does not pass through a contact). Plug-ins
@@ -71,7 +71,7 @@ extern "C" {
 /** The type of both entry points: 24 doubles in, 1 (collision) or 0 (none) out. */
 typedef int (*exactccd_plugin_fn)(const double q[24]);
 
-/** The type of the optional entry points with a time of impact: 1 and *toi, or 0. */
+/** The type of the optional entry points with a time of impact: 1 and toi[0], or 0. */
 typedef int (*exactccd_plugin_toi_fn)(const double q[24], double* toi);
 
 /**
@@ -86,10 +86,20 @@ EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_vf(const double q[24]);
  */
 EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_ee(const double q[24]);
 
-/** Optional: vertex-face CCD with the plug-in's time of impact in *toi when it returns 1. */
+/**
+ * Optional: vertex-face CCD of the plug-in's code with its time of impact: returns 1 and
+ * writes the time to `toi[0]` when it reports a collision, else returns 0.
+ * \param q   the query, as for exactccd_plugin_vf (24 doubles)
+ * \param toi where the time of impact is written (one double)
+ */
 EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_vf_toi(const double q[24], double* toi);
 
-/** Optional: edge-edge CCD with the plug-in's time of impact in *toi when it returns 1. */
+/**
+ * Optional: edge-edge CCD of the plug-in's code with its time of impact; see
+ * exactccd_plugin_vf_toi.
+ * \param q   the query, as for exactccd_plugin_ee (24 doubles)
+ * \param toi where the time of impact is written (one double)
+ */
 EXACTCCD_PLUGIN_EXPORT int exactccd_plugin_ee_toi(const double q[24], double* toi);
 
 #ifdef __cplusplus
