@@ -91,7 +91,8 @@ void feature_condition(const kinds::Feature& f, Rel&& rel, const DD& dd, Out&& o
     case kinds::FeaturePair::edge_edge: {
       const auto da = rel(i, j), db = rel(k, l), r = rel(i, k);
       const auto w = cross(da, db);
-      const auto ww = dot(w, w), h = dot(w, r);
+      const auto ww = dot(w, w);
+      const auto h = dot(w, r);  // (another degree: its own declaration, for clang)
       const auto s = dot(cross(r, db), w), u = dot(cross(r, da), w);
       out(h * h - dd * ww, s, ww - s, u, ww - u);
       return;
