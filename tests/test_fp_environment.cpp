@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cfenv>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -31,6 +32,7 @@
 #include "io/obj.hpp"
 #include "tools/methods.hpp"
 #include "fuzz/families.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 #if defined(__x86_64__) || defined(_M_X64)
 #include <xmmintrin.h>
@@ -517,6 +519,108 @@ TEST_P(EveryEnvironment, ScenesGiveDefaultAnswersAndLeaveTheEnvironment) {
     const SceneAnswers got = scene_answers(s, control_state());
     EXPECT_TRUE(got == reference) << env.name << ": scene " << name << " answers differ";
   }
+}
+
+/// The separation question's answers (CcdParams, every kind, both methods, the C API, scenes
+/// with a minimum separation) on queries that reach every stage: grid queries of every kind
+/// at d = 0, 1/4 and 2^-1074 with tmax 1 and 3/4, and the bundled vertex-face and edge-edge
+/// simulation files at d = 2^-10 of each query's largest coordinate (the separating direction, the interval
+/// stage with its long-double guess and integer signs); also checks that each call leaves the
+/// environment it found.
+std::vector<std::optional<TimeInterval>> separation_answers(const ControlState& expected) {
+  std::vector<std::optional<TimeInterval>> out;
+  const auto check_state = [&] {
+    if (!(control_state() == expected)) ADD_FAILURE() << "a separation entry point left " << describe(control_state());
+  };
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> c(-2, 2);
+  int kind_index = 0;
+  kinds::for_each_separation_kind([&](auto k) {
+    using Kind = decltype(k);
+    using Q = typename Kind::template Query<double>;
+    for (int i = 0; i < 40; ++i) {
+      auto r = rows(Q{});
+      for (auto& p : r) {
+        p.x = 0.25 * c(rng);
+        p.y = 0.25 * c(rng);
+        if constexpr (Kind::dimension == 3) p.z = 0.25 * c(rng);
+      }
+      if (i % 3 == 0) r[Kind::points] = r[0];
+      const Q q = from_rows<Q>(r);
+      const CcdParams params{i % 3 == 0 ? 0.0 : i % 3 == 1 ? 0.25 : 0x1p-1074, i % 2 ? 1.0 : 0.75};
+      for (Method m : {Method::filtered, Method::exact}) {
+        out.push_back(toi(q, params, m));
+        check_state();
+      }
+      std::vector<double> flat;
+      for (const auto& p : rows(q)) {
+        flat.push_back(p.x);
+        flat.push_back(p.y);
+        if constexpr (Kind::dimension == 3) flat.push_back(p.z);
+      }
+      int collides = -1;
+      double lo = -1, hi = -1;
+      EXPECT_EQ(exactccd_toi(kind_index, flat.data(), params.min_distance, params.tmax, &collides, &lo, &hi),
+                EXACTCCD_OK);
+      check_state();
+      out.push_back(collides ? std::optional(TimeInterval{lo, hi}) : std::nullopt);
+    }
+    ++kind_index;
+  });
+  for (const char* file : {"sim-cloth-vertex-face.csv", "sim-fold-edge-edge.csv", "sim-strip-edge-edge.csv"}) {
+    std::ifstream in(fs::path(EXACTCCD_SOURCE_DIR) / "data" / "sim" / file);
+    const io::BenchmarkQueries queries = io::read_benchmark_csv(in, file);
+    for (std::size_t i = 0; i < queries.size(); i += 4) {
+      const auto r = io::nearest_double_rows(queries.rows[i]);
+      // d = 2^-10 of the largest coordinate magnitude: exact in any rounding mode (this code runs
+      // in the environment under test; a rounded d would ask another question).
+      double largest = 0;
+      for (const Vec3& p : r) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+      const CcdParams params{std::ldexp(largest, -10), 1.0};
+      if (std::string(file).find("vertex-face") != std::string::npos)
+        out.push_back(toi(from_rows<VertexFaceQuery>(r), params));
+      else
+        out.push_back(toi(from_rows<EdgeEdgeQuery>(r), params));
+      check_state();
+    }
+  }
+  return out;
+}
+
+TEST_P(EveryEnvironment, SeparationQueriesGiveDefaultAnswersAndLeaveTheEnvironment) {
+  const Environment env = GetParam();
+  if (!supported(env)) GTEST_SKIP() << "cannot install " << env.name << " on this platform";
+  std::vector<std::optional<TimeInterval>> reference;
+  SceneAnswers scene_reference;
+  SceneOptions options;
+  options.min_distance = 1e-3;
+  options.tmax = 0.75;
+  const Scene s = load_scene("fold");
+  {
+    const RestoreDefault restore;
+    std::fesetenv(FE_DFL_ENV);
+    reference = separation_answers(control_state());
+    scene_reference.collisions = find_collisions(s, options);
+  }
+  EXPECT_GT(std::count_if(reference.begin(), reference.end(), [](const auto& t) { return t.has_value(); }), 100);
+  const RestoreDefault restore;
+  install(env);
+  const ControlState installed = control_state();
+  const auto got = separation_answers(installed);
+  ASSERT_EQ(got.size(), reference.size());
+  std::size_t differences = 0;
+  for (std::size_t i = 0; i < got.size(); ++i)
+    if (got[i].has_value() != reference[i].has_value() || (got[i] && !(*got[i] == *reference[i])))
+      if (++differences <= 10)
+        ADD_FAILURE() << env.name << ": separation answer " << i << ": " << describe(got[i]) << " instead of "
+                      << describe(reference[i]);
+  EXPECT_EQ(differences, 0u);
+  const std::vector<Collision> scene_got = find_collisions(s, options);
+  EXPECT_TRUE(control_state() == installed);
+  ASSERT_EQ(scene_got.size(), scene_reference.collisions.size()) << env.name;
+  for (std::size_t i = 0; i < scene_got.size(); ++i)
+    EXPECT_TRUE(scene_got[i].toi == scene_reference.collisions[i].toi && scene_got[i].vertex == scene_reference.collisions[i].vertex)
+        << env.name << ": scene collision " << i;
 }
 
 INSTANTIATE_TEST_SUITE_P(FpEnvironment, EveryEnvironment, ::testing::ValuesIn(kEnvironments),

@@ -14,33 +14,6 @@ namespace {
 
 using namespace exactccd;
 
-template <class Query>
-std::optional<Query> read_query(const double* q) {
-  std::array<Vec3, 8> rows;
-  for (int i = 0; i < 8; ++i) {
-    rows[i] = {q[3 * i], q[3 * i + 1], q[3 * i + 2]};
-    if (!std::isfinite(q[3 * i]) || !std::isfinite(q[3 * i + 1]) || !std::isfinite(q[3 * i + 2]))
-      return std::nullopt;
-  }
-  return from_rows<Query>(rows);
-}
-
-template <class Query, class Toi>
-exactccd_status toi_impl(const double* query, int* collides, double* lo, double* hi, Toi&& toi) {
-  if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const filter::DefaultFpEnvironment fp_environment;  // as every C++ entry point
-  const std::optional<Query> q = read_query<Query>(query);
-  if (!q) return EXACTCCD_ERROR_NON_FINITE;
-  try {
-    const std::optional<TimeInterval> t = toi(*q);
-    *collides = t.has_value() ? 1 : 0;
-    if (t && lo) *lo = t->lo;
-    if (t && hi) *hi = t->hi;
-    return EXACTCCD_OK;
-  } catch (const std::exception&) {
-    return EXACTCCD_ERROR_INTERNAL;
-  }
-}
 
 /// The query of a kind from its doubles (query_size of them), or nullopt on a non-finite one.
 template <class Query>
@@ -57,6 +30,24 @@ std::optional<Query> read_any_query(const double* q) {
   }
   return from_rows<Query>(r);
 }
+
+template <class Query, class Toi>
+exactccd_status toi_impl(const double* query, int* collides, double* lo, double* hi, Toi&& toi) {
+  if (!query || !collides) return EXACTCCD_ERROR_NULL;
+  const filter::DefaultFpEnvironment fp_environment;  // as every C++ entry point
+  const std::optional<Query> q = read_any_query<Query>(query);
+  if (!q) return EXACTCCD_ERROR_NON_FINITE;
+  try {
+    const std::optional<TimeInterval> t = toi(*q);
+    *collides = t.has_value() ? 1 : 0;
+    if (t && lo) *lo = t->lo;
+    if (t && hi) *hi = t->hi;
+    return EXACTCCD_OK;
+  } catch (const std::exception&) {
+    return EXACTCCD_ERROR_INTERNAL;
+  }
+}
+
 
 /// Calls f(Kind{}) for the kind with the C enum value `kind` (for_each_separation_kind's
 /// order); false for an unknown value.

@@ -58,29 +58,19 @@ void validate(const Query& q, const CcdParams& p, Method method, bool want_toi) 
                                 std::to_string(static_cast<int>(method)));
 }
 
-Vec3 lift(const Vec2& v) { return {v.x, v.y, 0.0}; }
-Vec3 lift(const Vec3& v) { return v; }
-
 /// The contact (d = 0) question of a query as an edge-edge query with the same answer and TOI:
 /// a point is a zero-length edge, and a 2D query lies in the plane z = 0.
 template <class Query>
 EdgeEdgeQuery as_edge_edge(const Query& q) {
-  const auto r = rows(q);
   constexpr int P = kinds::kind_of<Query>::points;
+  const auto x = separation::points3<double>(q);  // 2D points at z = 0
+  // Which point of the query each edge end is: (p, p) against (a, b) or (q, q).
+  constexpr std::array<int, 4> ends = P == 4 ? std::array<int, 4>{0, 1, 2, 3}
+                                      : P == 3 ? std::array<int, 4>{0, 0, 1, 2}
+                                               : std::array<int, 4>{0, 0, 1, 1};
   std::array<Vec3, 8> e;
-  for (int at = 0; at < 2; ++at) {
-    const auto point = [&](int i) { return lift(r[at * P + i]); };
-    if constexpr (P == 4) {
-      for (int i = 0; i < 4; ++i) e[at * 4 + i] = point(i);
-    } else if constexpr (P == 3) {  // point-edge: (p, p) against (a, b)
-      e[at * 4 + 0] = e[at * 4 + 1] = point(0);
-      e[at * 4 + 2] = point(1);
-      e[at * 4 + 3] = point(2);
-    } else {  // point-point: (p, p) against (q, q)
-      e[at * 4 + 0] = e[at * 4 + 1] = point(0);
-      e[at * 4 + 2] = e[at * 4 + 3] = point(1);
-    }
-  }
+  for (int at = 0; at < 2; ++at)
+    for (int i = 0; i < 4; ++i) e[at * 4 + i] = x[at * P + ends[i]];
   return from_rows<EdgeEdgeQuery>(e);
 }
 
@@ -140,17 +130,18 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method me
   return separation::exact_toi(exact::to_rational(q), RationalCcdParams{mpq_class(p.min_distance), mpq_class(p.tmax)});
 }
 
+/// Throws std::invalid_argument naming the function on a negative d or a tmax outside (0, 1].
 template <class Query>
-void validate(const RationalCcdParams& p) {
+void validate(const RationalCcdParams& p, bool want_toi) {
   if (!(p.min_distance >= 0))
-    throw std::invalid_argument("exactccd::toi: min_distance must be >= 0");
-  if (!(p.tmax > 0 && p.tmax <= 1)) throw std::invalid_argument("exactccd::toi: tmax must be in (0, 1]");
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": min_distance must be >= 0");
+  if (!(p.tmax > 0 && p.tmax <= 1)) throw std::invalid_argument(function_name<Query>(want_toi) + ": tmax must be in (0, 1]");
 }
 
 template <class Query>
-std::optional<TimeInterval> rational_answer(const Query& q, const RationalCcdParams& p) {
+std::optional<TimeInterval> rational_answer(const Query& q, const RationalCcdParams& p, bool want_toi) {
   const filter::DefaultFpEnvironment fp_environment;  // CGAL's kernel filters with intervals
-  validate<Query>(p);
+  validate<Query>(p, want_toi);
   using Kind = kinds::kind_of<Query>;
   if constexpr (std::is_same_v<Kind, kinds::VertexFace> || std::is_same_v<Kind, kinds::EdgeEdge>)
     if (p.min_distance == 0 && p.tmax == 1) return exact::toi(q);
@@ -182,8 +173,8 @@ EXACTCCD_DEFINE_ENTRY_POINTS(PointPoint2dQuery, point_point_2d)
 #undef EXACTCCD_DEFINE_ENTRY_POINTS
 
 #define EXACTCCD_DEFINE_RATIONAL(Query)                                                               \
-  bool ccd(const Query& q, const RationalCcdParams& p) { return rational_answer(q, p).has_value(); } \
-  std::optional<TimeInterval> toi(const Query& q, const RationalCcdParams& p) { return rational_answer(q, p); }
+  bool ccd(const Query& q, const RationalCcdParams& p) { return rational_answer(q, p, false).has_value(); } \
+  std::optional<TimeInterval> toi(const Query& q, const RationalCcdParams& p) { return rational_answer(q, p, true); }
 EXACTCCD_DEFINE_RATIONAL(RationalVertexFaceQuery)
 EXACTCCD_DEFINE_RATIONAL(RationalEdgeEdgeQuery)
 EXACTCCD_DEFINE_RATIONAL(RationalPointEdgeQuery)
