@@ -538,7 +538,7 @@ std::vector<std::optional<TimeInterval>> separation_answers(const ControlState& 
   kinds::for_each_separation_kind([&](auto k) {
     using Kind = decltype(k);
     using Q = typename Kind::template Query<double>;
-    for (int i = 0; i < 40; ++i) {
+    for (int i = 0; i < 18; ++i) {
       auto r = rows(Q{});
       for (auto& p : r) {
         p.x = 0.25 * c(rng);
@@ -570,7 +570,7 @@ std::vector<std::optional<TimeInterval>> separation_answers(const ControlState& 
   for (const char* file : {"sim-cloth-vertex-face.csv", "sim-fold-edge-edge.csv", "sim-strip-edge-edge.csv"}) {
     std::ifstream in(fs::path(EXACTCCD_SOURCE_DIR) / "data" / "sim" / file);
     const io::BenchmarkQueries queries = io::read_benchmark_csv(in, file);
-    for (std::size_t i = 0; i < queries.size(); i += 4) {
+    for (std::size_t i = 0; i < queries.size(); i += 12) {  // (sized for the sanitizer pass)
       const auto r = io::nearest_double_rows(queries.rows[i]);
       // d = 2^-10 of the largest coordinate magnitude: exact in any rounding mode (this code runs
       // in the environment under test; a rounded d would ask another question).
@@ -602,7 +602,7 @@ TEST_P(EveryEnvironment, SeparationQueriesGiveDefaultAnswersAndLeaveTheEnvironme
     reference = separation_answers(control_state());
     scene_reference.collisions = find_collisions(s, options);
   }
-  EXPECT_GT(std::count_if(reference.begin(), reference.end(), [](const auto& t) { return t.has_value(); }), 100);
+  EXPECT_GT(std::count_if(reference.begin(), reference.end(), [](const auto& t) { return t.has_value(); }), 40);
   const RestoreDefault restore;
   install(env);
   const ControlState installed = control_state();
