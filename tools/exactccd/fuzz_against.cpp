@@ -23,6 +23,7 @@
 #include "fuzz/families.hpp"
 #include "fuzz/fuzz_input.hpp"
 #include "output_file.hpp"
+#include "partial.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -364,15 +365,22 @@ const CommandSpec& command() {
   static const CommandSpec spec = [] {
     CommandSpec c;
     c.name = "fuzz-against";
-    c.usage = "usage: exactccd fuzz-against PLUGIN.so --kind vf|ee --out DIR [options]";
+    c.usage = "usage: exactccd fuzz-against PLUGIN.so --kind vf|ee (--out DIR | --partial OUT [--shard I/N]) [options]";
     c.description = kDescription;
     c.options = {
         required(kind_option("query kind")),
         integer_option("--queries", "N", 1, kMaxFuzzQueries, "10000", "number of queries"),
         unsigned64_option("--seed", "S", "1", "seed; a run is reproducible and independent of --threads"),
-        required(text_option("--out", "DIR", "", "where to write the disagreements (created if missing)")),
+        text_option("--out", "DIR", "", "where to write the disagreements (created if missing)"),
         threads_option("1", "query on N threads (the plug-in must then be thread-safe)"),
         flag_option("--no-shrink", "write the disagreements as found"),
+        shard_option("--shard", kMaxShards,
+                     "only the I-th of N contiguous blocks of the queries 0..Q-1 (a cluster job);\n"
+                     "needs --partial"),
+        text_option("--partial", "OUT", "",
+                    "write this run's or shard's partial results to OUT instead of the report and\n"
+                    "DIR (then no --out): `exactccd merge --out DIR` of the N shards' files prints\n"
+                    "the report and writes DIR, byte-identical to one run"),
     };
     c.epilogue =
         "exit codes: 0 ran (whatever it found), 2 bad usage, an unwritable DIR, or a plug-in that cannot\n"
@@ -390,28 +398,51 @@ struct Run {
   std::string out_dir;
   unsigned threads = 1;
   bool shrinking = true;
+  std::size_t shard_index = 0, shard_count = 1;
+  std::string partial_path;  ///< write the partial results here instead of the report
 };
 
-/// A run on queries of the kind Kind (a description of lib/kinds the fuzz decoder writes).
-template <class Kind>
-int fuzz_kind(const Run& run) {
-  const std::string& plugin_path = run.plugin_path;
-  const std::size_t queries = run.queries;
-  const std::uint64_t seed = run.seed;
-  const std::string& out_dir = run.out_dir;
-  const std::string kind_suffix(Kind::name);
-  const std::string kind_short(Kind::short_name);
-  const Plugin plugin(plugin_path, query_kind<Kind>());
-  prepare_output_directory(out_dir);
+/// One row of the table.
+struct Row {
+  std::size_t queries = 0, collide = 0, fp = 0, fn = 0, errors = 0;
+  std::set<int> ks;  // family sweep: k at which some instance disagreed
+};
 
-  const Groups groups = make_groups<Kind>();
-  std::vector<Generated> generated(queries);
-  std::vector<Outcome> outcomes(queries);
-  const double start = now_seconds();
-  parallel_for(0, queries, run.threads, [&](std::size_t i) {
-    Generated& q = generated[i];
-    q = generate<Kind>(i, seed, groups);
-    Outcome& o = outcomes[i];
+/// What the report of a run is made of, for a range of its queries (the whole run, or one
+/// shard): the table's rows per group, the TOI comparison and the disagreements in query order.
+struct FuzzTally {
+  std::vector<Row> groups;
+  std::size_t shared = 0;  ///< collisions both find, with the plug-in's TOI
+  std::vector<double> gaps;
+  struct Unsafe {
+    std::size_t index = 0, group = 0;
+    double their_toi = 0;
+    TimeInterval exact{};
+    Rows rows{};
+  };
+  std::vector<Unsafe> unsafe;
+  struct Disagreement {
+    std::size_t index = 0, group = 0;
+    bool truth = false, family = false, toward = false;
+    int k = 0;
+    Rows shrunk{};
+    std::string note;
+  };
+  std::vector<Disagreement> disagreements;
+};
+
+/// Runs queries [begin, end) of the run against the plug-in.
+template <class Kind>
+FuzzTally fuzz_queries(const Run& run, const Plugin& plugin, const Groups& groups, std::size_t begin,
+                       std::size_t end) {
+  const std::size_t n = end - begin;
+  std::vector<Generated> generated(n);
+  std::vector<Outcome> outcomes(n);
+  parallel_for(0, n, run.threads, [&](std::size_t j) {
+    const std::size_t i = begin + j;
+    Generated& q = generated[j];
+    q = generate<Kind>(i, run.seed, groups);
+    Outcome& o = outcomes[j];
     o.truth = exact_answer<Kind>(q.rows);
     if (plugin.reports_toi()) {
       double t = 0;
@@ -431,111 +462,226 @@ int fuzz_kind(const Run& run) {
       o.note = "not shrunk";
     }
   }, "fuzz-against");
-  const double seconds = now_seconds() - start;
 
-  // The table.
-  struct Row {
-    std::size_t queries = 0, collide = 0, fp = 0, fn = 0, errors = 0;
-    std::set<int> ks;  // family sweep: k at which some instance disagreed
-  };
-  std::vector<Row> table(groups.names.size());
-  Row total;
-  for (std::size_t i = 0; i < queries; ++i) {
-    const Outcome& o = outcomes[i];
-    for (Row* row : {&table[generated[i].group], &total}) {
-      ++row->queries;
-      row->collide += o.truth;
-      row->errors += o.error();
-      row->fp += o.disagrees() && !o.truth;
-      row->fn += o.disagrees() && o.truth;
-      if (o.disagrees() && generated[i].family && row != &total) row->ks.insert(generated[i].k);
+  FuzzTally t;
+  t.groups.resize(groups.names.size());
+  for (std::size_t j = 0; j < n; ++j) {
+    const Outcome& o = outcomes[j];
+    const Generated& q = generated[j];
+    Row& row = t.groups[q.group];
+    ++row.queries;
+    row.collide += o.truth;
+    row.errors += o.error();
+    row.fp += o.disagrees() && !o.truth;
+    row.fn += o.disagrees() && o.truth;
+    if (o.disagrees() && q.family) row.ks.insert(q.k);
+    if (o.their_toi && o.exact_toi) {
+      ++t.shared;
+      if (o.unsafe())
+        t.unsafe.push_back({begin + j, q.group, *o.their_toi, *o.exact_toi, q.rows});
+      else
+        t.gaps.push_back(o.exact_toi->lo - *o.their_toi);
+    }
+    if (o.disagrees())
+      t.disagreements.push_back({begin + j, q.group, o.truth, q.family != nullptr, q.toward, q.k, o.shrunk, o.note});
+  }
+  return t;
+}
+
+/// The run's settings as partial-file settings (every shard of one run has the same).
+std::vector<std::pair<std::string, std::string>> partial_settings(const Run& run, const std::string& kind_short,
+                                                                  bool reports_toi) {
+  return {{"plugin", run.plugin_path},
+          {"kind", kind_short},
+          {"queries", std::to_string(run.queries)},
+          {"seed", std::to_string(run.seed)},
+          {"shrink", run.shrinking ? "1" : "0"},
+          {"toi", reports_toi ? "1" : "0"}};
+}
+
+std::string hex_rows(const Rows& r) {
+  std::string out;
+  for (const Vec3& p : r)
+    for (const double x : {p.x, p.y, p.z}) out += " " + hex_double(x);
+  return out;
+}
+
+/// Reads 24 coordinates from words[first..first+24).
+Rows rows_from_words(const std::vector<std::string>& w, std::size_t first, const PartialRecord& r) {
+  if (w.size() < first + 24) throw io::ParseError(r.source, r.line, "a query needs 24 coordinates");
+  Rows rows{};
+  for (std::size_t i = 0; i < 8; ++i)
+    rows[i] = {parse_double(w[first + 3 * i], r.source, r.line), parse_double(w[first + 3 * i + 1], r.source, r.line),
+               parse_double(w[first + 3 * i + 2], r.source, r.line)};
+  return rows;
+}
+
+/// The tally as partial records: the group rows, then the TOI records and the disagreements.
+void add_records(const FuzzTally& t, Partial& p) {
+  for (std::size_t g = 0; g < t.groups.size(); ++g) {
+    const Row& r = t.groups[g];
+    std::string ks;
+    for (const int k : r.ks) ks += (ks.empty() ? "" : ",") + std::to_string(k);
+    p.add("group " + std::to_string(g) + " " + std::to_string(r.queries) + " " + std::to_string(r.collide) + " " +
+          std::to_string(r.fp) + " " + std::to_string(r.fn) + " " + std::to_string(r.errors) + " " +
+          (ks.empty() ? "-" : ks));
+  }
+  p.add("shared " + std::to_string(t.shared));
+  for (const double g : t.gaps) p.add("gap " + hex_double(g));
+  for (const FuzzTally::Unsafe& u : t.unsafe)
+    p.add("unsafe " + std::to_string(u.index) + " " + std::to_string(u.group) + " " + hex_double(u.their_toi) + " " +
+          hex_double(u.exact.lo) + " " + hex_double(u.exact.hi) + hex_rows(u.rows));
+  for (const FuzzTally::Disagreement& d : t.disagreements)
+    p.add("disagreement " + std::to_string(d.index) + " " + std::to_string(d.group) + " " + (d.truth ? "1" : "0") +
+          " " + (d.family ? "1" : "0") + " " + std::to_string(d.k) + " " + (d.toward ? "1" : "0") + hex_rows(d.shrunk) +
+          " " + d.note);
+}
+
+/// The tally of merged records (shards in order: rows add up, the rest concatenates).
+FuzzTally tally_from_records(const Partial& p, std::size_t group_count) {
+  FuzzTally t;
+  t.groups.resize(group_count);
+  for (const PartialRecord& r : p.records) {
+    const std::vector<std::string> w = split_words(r.text);
+    const auto count = [&](std::size_t i) { return parse_count(w.at(i), r.source, r.line); };
+    const auto group = [&](std::size_t i) {
+      const std::size_t g = count(i);
+      if (g >= group_count) throw io::ParseError(r.source, r.line, "group " + w[i] + " out of range");
+      return g;
+    };
+    const auto flag = [&](std::size_t i) {
+      if (w.at(i) != "0" && w.at(i) != "1") throw io::ParseError(r.source, r.line, "expected 0 or 1, found '" + w[i] + "'");
+      return w[i] == "1";
+    };
+    if (w.empty()) throw io::ParseError(r.source, r.line, "empty record");
+    if (w[0] == "group" && w.size() == 8) {
+      Row& row = t.groups[group(1)];
+      row.queries += count(2);
+      row.collide += count(3);
+      row.fp += count(4);
+      row.fn += count(5);
+      row.errors += count(6);
+      if (w[7] != "-") {
+        std::istringstream ks(w[7]);
+        for (std::string k; std::getline(ks, k, ',');) row.ks.insert(parse_int(k, r.source, r.line));
+      }
+    } else if (w[0] == "shared" && w.size() == 2) {
+      t.shared += count(1);
+    } else if (w[0] == "gap" && w.size() == 2) {
+      t.gaps.push_back(parse_double(w[1], r.source, r.line));
+    } else if (w[0] == "unsafe" && w.size() == 6 + 24) {
+      t.unsafe.push_back({count(1), group(2), parse_double(w[3], r.source, r.line),
+                          {parse_double(w[4], r.source, r.line), parse_double(w[5], r.source, r.line)},
+                          rows_from_words(w, 6, r)});
+    } else if (w[0] == "disagreement" && w.size() >= 7 + 24) {
+      FuzzTally::Disagreement d;
+      d.index = count(1);
+      d.group = group(2);
+      d.truth = flag(3);
+      d.family = flag(4);
+      d.k = parse_int(w[5], r.source, r.line);
+      d.toward = flag(6);
+      d.shrunk = rows_from_words(w, 7, r);
+      // The note is the rest of the line after the 31st word (it has spaces of its own).
+      std::size_t pos = 0;
+      for (int skip = 0; skip < 31; ++skip) {
+        pos = r.text.find_first_not_of(' ', pos);
+        pos = r.text.find(' ', pos);
+      }
+      d.note = pos == std::string::npos ? "" : r.text.substr(pos + 1);
+      t.disagreements.push_back(std::move(d));
+    } else {
+      throw io::ParseError(r.source, r.line, "not a fuzz-against record: '" + w[0] + "' with " +
+                                                 std::to_string(w.size()) + " fields");
     }
   }
-  std::printf("fuzz-against %s (%s): %zu %s queries, seed %llu, truth = the exact answer (Method::exact), %.1f s\n\n",
-              plugin_path.c_str(), plugin.symbol(), queries, kind_suffix.c_str(),
-              static_cast<unsigned long long>(seed), seconds);
+  return t;
+}
+
+/// Prints the report of a whole run and writes its files to run.out_dir (the help describes both).
+template <class Kind>
+void report_fuzz(const Run& run, const FuzzTally& t, const Groups& groups, bool reports_toi) {
+  const std::string kind_suffix(Kind::name);
+  const std::string kind_short(Kind::short_name);
+  prepare_output_directory(run.out_dir);
+  Row total;
+  for (const Row& r : t.groups) {
+    total.queries += r.queries;
+    total.collide += r.collide;
+    total.fp += r.fp;
+    total.fn += r.fn;
+    total.errors += r.errors;
+  }
+  std::printf("fuzz-against %s (%s): %zu %s queries, seed %llu, truth = the exact answer (Method::exact)\n\n",
+              run.plugin_path.c_str(), Kind::plugin_symbol.data(), run.queries, kind_suffix.c_str(),
+              static_cast<unsigned long long>(run.seed));
   std::printf("%-28s %8s %8s %7s %7s %7s  %s\n", "group", "queries", "collide", "FP", "FN", "errors",
               "disagrees at k (families; -1 = unperturbed)");
   const auto print_row = [](const std::string& name, const Row& r) {
     std::printf("%-28s %8zu %8zu %7zu %7zu %7zu  %s\n", name.c_str(), r.queries, r.collide, r.fp, r.fn,
                 r.errors, k_ranges(r.ks).c_str());
   };
-  for (std::size_t g = 0; g < table.size(); ++g) print_row(groups.names[g], table[g]);
+  for (std::size_t g = 0; g < t.groups.size(); ++g) print_row(groups.names[g], t.groups[g]);
   print_row("total", total);
 
   // Times of impact, when the plug-in reports them.
   std::string unsafe_index;
   io::BenchmarkQueries unsafe_queries;
-  if (plugin.reports_toi()) {
-    std::size_t shared = 0;
-    std::vector<double> gaps;
-    for (std::size_t i = 0; i < queries; ++i) {
-      const Outcome& o = outcomes[i];
-      if (!o.their_toi || !o.exact_toi) continue;
-      ++shared;
-      if (!o.unsafe()) {
-        gaps.push_back(o.exact_toi->lo - *o.their_toi);
-        continue;
-      }
+  const auto rational_rows = [](const Rows& r) {
+    std::array<RationalVec3, 8> q;
+    for (std::size_t p = 0; p < 8; ++p) q[p] = {mpq_class(r[p].x), mpq_class(r[p].y), mpq_class(r[p].z)};
+    return q;
+  };
+  if (reports_toi) {
+    for (const FuzzTally::Unsafe& u : t.unsafe) {
       char line[200];
-      std::snprintf(line, sizeof line, "%06zu  %s  T %.17g  exact [%.17g, %.17g]\n", i,
-                    groups.names[generated[i].group].c_str(), *o.their_toi, o.exact_toi->lo, o.exact_toi->hi);
+      std::snprintf(line, sizeof line, "%06zu  %s  T %.17g  exact [%.17g, %.17g]\n", u.index,
+                    groups.names[u.group].c_str(), u.their_toi, u.exact.lo, u.exact.hi);
       unsafe_index += line;
-      std::array<RationalVec3, 8> rational;
-      for (std::size_t p = 0; p < 8; ++p)
-        rational[p] = {mpq_class(generated[i].rows[p].x), mpq_class(generated[i].rows[p].y),
-                       mpq_class(generated[i].rows[p].z)};
-      unsafe_queries.rows.push_back(rational);
+      unsafe_queries.rows.push_back(rational_rows(u.rows));
       unsafe_queries.truth.push_back(true);
     }
+    std::vector<double> gaps = t.gaps;
     std::sort(gaps.begin(), gaps.end());
     const auto at = [&](double q) { return gaps[static_cast<std::size_t>(std::llround(q * (gaps.size() - 1)))]; };
     std::printf("\ntimes of impact (%s): %zu collisions both find, %zu safe (T <= exact), %zu unsafe (T after the "
-                "exact time)\n", plugin.symbol(), shared, gaps.size(), unsafe_queries.size());
+                "exact time)\n", Kind::plugin_symbol.data(), t.shared, gaps.size(), unsafe_queries.size());
     if (!gaps.empty())
       std::printf("gap lo - T of the safe ones: min %.3g, median %.3g, max %.3g\n", at(0), at(0.5), at(1));
   }
 
   // The disagreements: replace this kind's files of an earlier run, then write.
-  for (const auto& entry : fs::directory_iterator(out_dir))
+  for (const auto& entry : fs::directory_iterator(run.out_dir))
     if (entry.is_regular_file() && is_output_of_kind(entry.path().filename().string(), kind_suffix))
       fs::remove(entry.path());
   io::BenchmarkQueries all;
   std::string index;
-  std::size_t files = 0;
-  for (std::size_t i = 0; i < queries; ++i) {
-    const Outcome& o = outcomes[i];
-    if (!o.disagrees()) continue;
-    const Generated& q = generated[i];
-    const char* type = o.truth ? "FN" : "FP";
+  for (const FuzzTally::Disagreement& d : t.disagreements) {
+    const char* type = d.truth ? "FN" : "FP";
     char prefix[32];
-    std::snprintf(prefix, sizeof prefix, "%06zu", i);
-    const std::string name = std::string(prefix) + "-" + groups.names[q.group] + "-" + type + "-" + kind_suffix + ".csv";
-    write_atomically(fs::path(out_dir) / name, fuzzing::benchmark_csv(o.shrunk, o.truth));
-    ++files;
-    std::array<RationalVec3, 8> rational;
-    for (std::size_t p = 0; p < 8; ++p)
-      rational[p] = {mpq_class(o.shrunk[p].x), mpq_class(o.shrunk[p].y), mpq_class(o.shrunk[p].z)};
-    all.rows.push_back(rational);
-    all.truth.push_back(o.truth);
-    index += name + "  " + type + "  " + groups.names[q.group];
-    if (q.family) index += " k " + std::to_string(q.k) + (q.toward ? " toward" : " away");
-    index += "  " + o.note + "\n" + fuzzing::hex_rows<Kind>(o.shrunk);
+    std::snprintf(prefix, sizeof prefix, "%06zu", d.index);
+    const std::string name = std::string(prefix) + "-" + groups.names[d.group] + "-" + type + "-" + kind_suffix + ".csv";
+    write_atomically(fs::path(run.out_dir) / name, fuzzing::benchmark_csv(d.shrunk, d.truth));
+    all.rows.push_back(rational_rows(d.shrunk));
+    all.truth.push_back(d.truth);
+    index += name + "  " + type + "  " + groups.names[d.group];
+    if (d.family) index += " k " + std::to_string(d.k) + (d.toward ? " toward" : " away");
+    index += "  " + d.note + "\n" + fuzzing::hex_rows<Kind>(d.shrunk);
   }
   std::ostringstream csv;
   io::write_benchmark_csv(csv, all);
-  write_atomically(fs::path(out_dir) / ("disagreements-" + kind_suffix + ".csv"), csv.str());
-  write_atomically(fs::path(out_dir) / ("disagreements-" + kind_suffix + ".txt"),
-                   "# exactccd fuzz-against " + plugin_path + " --kind " + kind_short + " --queries " +
-                       std::to_string(queries) + " --seed " + std::to_string(seed) +
+  write_atomically(fs::path(run.out_dir) / ("disagreements-" + kind_suffix + ".csv"), csv.str());
+  write_atomically(fs::path(run.out_dir) / ("disagreements-" + kind_suffix + ".txt"),
+                   "# exactccd fuzz-against " + run.plugin_path + " --kind " + kind_short + " --queries " +
+                       std::to_string(run.queries) + " --seed " + std::to_string(run.seed) +
                        ": one line per disagreement (file, FP/FN, group, shrinking), then the shrunk query "
                        "in hex floats; the rows of disagreements-" + kind_suffix + ".csv in order\n" + index);
-  if (plugin.reports_toi()) {
+  if (reports_toi) {
     std::ostringstream unsafe_csv;
     io::write_benchmark_csv(unsafe_csv, unsafe_queries);
-    write_atomically(fs::path(out_dir) / ("unsafe-toi-" + kind_suffix + ".csv"), unsafe_csv.str());
-    write_atomically(fs::path(out_dir) / ("unsafe-toi-" + kind_suffix + ".txt"),
-                     "# exactccd fuzz-against " + plugin_path + " --kind " + kind_short +
+    write_atomically(fs::path(run.out_dir) / ("unsafe-toi-" + kind_suffix + ".csv"), unsafe_csv.str());
+    write_atomically(fs::path(run.out_dir) / ("unsafe-toi-" + kind_suffix + ".txt"),
+                     "# exactccd fuzz-against " + run.plugin_path + " --kind " + kind_short +
                          ": one line per collision whose reported time of impact T is after the exact "
                          "one (index, group, T, exact TOI); the rows of unsafe-toi-" + kind_suffix +
                          ".csv in order\n" + unsafe_index);
@@ -543,8 +689,38 @@ int fuzz_kind(const Run& run) {
   std::printf("\n%zu disagreements (FP %zu, FN %zu)%s, written to %s: one CSV each, all in "
               "disagreements-%s.csv, described in disagreements-%s.txt\n"
               "replay: exactccd check --kind %s %s/disagreements-%s.csv\n",
-              files, total.fp, total.fn, run.shrinking ? ", shrunk" : "", out_dir.c_str(), kind_suffix.c_str(),
-              kind_suffix.c_str(), kind_short.c_str(), out_dir.c_str(), kind_suffix.c_str());
+              t.disagreements.size(), total.fp, total.fn, run.shrinking ? ", shrunk" : "", run.out_dir.c_str(),
+              kind_suffix.c_str(), kind_suffix.c_str(), kind_short.c_str(), run.out_dir.c_str(), kind_suffix.c_str());
+}
+
+/// A run (or one shard of it) on queries of the kind Kind (a description of lib/kinds the fuzz
+/// decoder writes): the report, or with run.partial_path the partial results.
+template <class Kind>
+int fuzz_kind(const Run& run) {
+  const Plugin plugin(run.plugin_path, query_kind<Kind>());
+  if (run.partial_path.empty()) prepare_output_directory(run.out_dir);  // fail before the work
+  const Groups groups = make_groups<Kind>();
+  const std::size_t begin = run.queries * run.shard_index / run.shard_count;
+  const std::size_t end = run.queries * (run.shard_index + 1) / run.shard_count;
+  const double start = now_seconds();
+  const FuzzTally tally = fuzz_queries<Kind>(run, plugin, groups, begin, end);
+  // The time goes to stderr: stdout is the report, the same for a run, its shards merged, and
+  // any --threads.
+  std::fprintf(stderr, "fuzz-against: %zu queries in %.1f s\n", end - begin, now_seconds() - start);
+  if (run.partial_path.empty()) {
+    report_fuzz<Kind>(run, tally, groups, plugin.reports_toi());
+    return kExitOk;
+  }
+  Partial p;
+  p.command = "fuzz-against";
+  p.settings = partial_settings(run, std::string(Kind::short_name), plugin.reports_toi());
+  p.shard_index = run.shard_index;
+  p.shard_count = run.shard_count;
+  p.begin = begin;
+  p.end = end;
+  p.total = run.queries;
+  add_records(tally, p);
+  write_partial(run.partial_path, p);
   return kExitOk;
 }
 
@@ -559,14 +735,21 @@ int run_fuzz_against(int argc, char** argv) {
   const std::optional<QueryKind> kind = kind_of(options);
   const auto queries = static_cast<std::size_t>(options.integer("--queries"));
   const std::uint64_t seed = options.unsigned64("--seed");
-  const std::string out_dir = options.text("--out");
+  const std::string out_dir = options.has("--out") ? options.text("--out") : "";
+  const std::string partial_path = options.has("--partial") ? options.text("--partial") : "";
+  const auto [shard_index, shard_count] = options.shard("--shard");
+  if (options.has("--shard") && partial_path.empty())
+    throw UsageError("fuzz-against: --shard needs --partial FILE (the shards are merged by exactccd merge --out DIR)");
+  if (partial_path.empty() == out_dir.empty())
+    throw UsageError("fuzz-against: give exactly one of --out DIR and --partial FILE");
   const auto threads = static_cast<unsigned>(options.integer("--threads"));
   const bool shrinking = !options.flag("--no-shrink");
   if (options.positionals().empty()) throw UsageError("fuzz-against: no plug-in (see exactccd fuzz-against --help)");
   if (options.positionals().size() > 1)
     throw UsageError("fuzz-against: one plug-in at a time ('" + options.positionals()[0] + "' and '" +
                      options.positionals()[1] + "')");
-  const Run run{options.positionals()[0], queries, seed, out_dir, threads, shrinking};
+  const Run run{options.positionals()[0], queries, seed, out_dir, threads, shrinking, shard_index, shard_count,
+                partial_path};
   return visit_kind(*kind, [&](auto k) {
     using Kind = decltype(k);
     if constexpr (fuzzing::is_decodable_v<Kind>) {
@@ -574,6 +757,32 @@ int run_fuzz_against(int argc, char** argv) {
     } else {
       throw UsageError("fuzz-against: --kind " + std::string(Kind::short_name) +
                        " is not supported (the fuzz decoder writes vertex-face and edge-edge queries)");
+      return static_cast<int>(kExitUsage);
+    }
+  });
+}
+
+int merge_fuzz_against(const Partial& merged, const std::string& source, const std::string& out_dir) {
+  if (out_dir.empty()) throw UsageError("merge: fuzz-against partials need --out DIR (where the run writes its files)");
+  Run run;
+  run.plugin_path = merged.setting("plugin", source);
+  run.queries = parse_count(merged.setting("queries", source), source, 1);
+  run.seed = parse_count(merged.setting("seed", source), source, 1);
+  run.shrinking = merged.setting("shrink", source) == "1";
+  run.out_dir = out_dir;
+  const bool reports_toi = merged.setting("toi", source) == "1";
+  if (run.queries != merged.total)
+    throw io::ParseError(source, 1, "the run has " + std::to_string(run.queries) + " queries but the shards cover " +
+                                        std::to_string(merged.total));
+  const std::string& kind_text = merged.setting("kind", source);
+  return visit_kind(parse_kind(kind_text), [&](auto k) {
+    using Kind = decltype(k);
+    if constexpr (fuzzing::is_decodable_v<Kind>) {
+      const Groups groups = make_groups<Kind>();
+      report_fuzz<Kind>(run, tally_from_records(merged, groups.names.size()), groups, reports_toi);
+      return static_cast<int>(kExitOk);
+    } else {
+      throw io::ParseError(source, 1, "fuzz-against has no kind '" + kind_text + "'");
       return static_cast<int>(kExitUsage);
     }
   });

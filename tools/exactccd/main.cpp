@@ -25,6 +25,7 @@ constexpr Subcommand kSubcommands[] = {
     {"stability", exactccd::cli::run_stability, "error rates of every method on the degenerate families vs k"},
     {"scene", exactccd::cli::run_scene, "exact CCD of a whole mesh over one step (two OBJ files)"},
     {"fuzz-against", exactccd::cli::run_fuzz_against, "another code (a plug-in .so) against the exact answers"},
+    {"merge", exactccd::cli::run_merge, "the report of a sharded compare or fuzz-against run from its partial files"},
 };
 
 void print_help() {
