@@ -26,6 +26,18 @@ if(EXACTCCD_BUILD_TESTS)
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:exactccd_cli> -DNAIVE=$<TARGET_FILE:naive_plugin>
             -DVF_ONLY=$<TARGET_FILE:plugin_vf_only> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/fuzz-against-test
             -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli_fuzz_against.cmake)
+  # Sharded runs merged (tests/cli_merge.cmake), and the Slurm recipe of tools/cluster/ on a
+  # one-node cluster the test starts itself (tests/cluster_slurm.sh; skipped without slurm-wlm
+  # and munge, or when not root).
+  add_test(NAME cli.merge
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:exactccd_cli> -DPLUGIN=$<TARGET_FILE:naive_plugin>
+            -DDATA=${CMAKE_CURRENT_SOURCE_DIR}/data/sim -DWORK=${CMAKE_CURRENT_BINARY_DIR}/cli-tests/merge
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli_merge.cmake)
+  add_test(NAME cli.cluster_slurm
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/tests/cluster_slurm.sh $<TARGET_FILE:exactccd_cli>
+            $<TARGET_FILE:naive_plugin> ${CMAKE_CURRENT_SOURCE_DIR}/data/sim
+            ${CMAKE_CURRENT_SOURCE_DIR}/tools/cluster ${CMAKE_CURRENT_BINARY_DIR}/cli-tests/cluster_slurm)
+  set_tests_properties(cli.cluster_slurm PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
   # The committed seed corpus holds what the generator writes now.
   add_executable(make_seed_corpus fuzz/make_seed_corpus.cpp)
   target_compile_options(make_seed_corpus PRIVATE ${EXACTCCD_WARNINGS})

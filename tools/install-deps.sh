@@ -9,6 +9,7 @@ packages=(
   python3-matplotlib
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis
   clang libclang-rt-dev
+  slurm-wlm munge
 )
 
 missing=()

@@ -41,7 +41,7 @@ if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
   # MinSeparationCgal tests.
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs" \
-      -E '^(package\.|cli\.(fuzz_against|families_wide)$|MinSeparationCgal\.NearQueries$|MinSeparationData\.)'
+      -E '^(package\.|cli\.(fuzz_against|families_wide|merge|cluster_slurm)$|MinSeparationCgal\.NearQueries$|MinSeparationData\.)'
 fi
 
 if [ "${EXACTCCD_SKIP_FUZZERS:-0}" != "1" ]; then
