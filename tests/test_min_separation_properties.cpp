@@ -89,7 +89,7 @@ template <class Q>
 using Rows = std::array<Row, 2 * Kind<Q>::nv>;  // file row order: every vertex at t0, then at t1
 
 inline Row get3(const Vec3& p) { return {p.x, p.y, p.z}; }
-inline Row get3(const Vec2& p) { return {p.x, p.y, 0.0}; }
+[[maybe_unused]] inline Row get3(const Vec2& p) { return {p.x, p.y, 0.0}; }
 
 template <class Q>
 Rows<Q> rows_of(const Q& q) {
