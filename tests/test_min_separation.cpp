@@ -162,10 +162,13 @@ TEST(MinSeparation, FilteredEqualsExactOnSimulationSets) {
     expect_filtered_equals_exact_on<EdgeEdgeQuery>(std::string("sim-") + scene + "-edge-edge.csv", stages);
   }
   // 698 calls (349 queries at two distances); when this test was written: 619 separated, 49 by
-  // the interval stage in intervals alone, 30 with integer signs in its narrowing, 0 exact. The
-  // thresholds only require that every stage takes part.
-  EXPECT_GT(stages.interval, 20u) << stages.exact << " exact, " << stages.separating_direction << " separated";
-  EXPECT_GT(stages.integer, 10u);
+  // the interval stage in intervals alone, 30 with integer signs in its narrowing, 0 exact.
+  // Since the narrowing's signs are certified in double-double (separation/distance_sign.hpp):
+  // 619 separated, 79 interval, 0 integer, 0 exact. The thresholds require that the interval
+  // stage decides all but a few of the queries it sees without GMP (the integer signs remain
+  // for exact zeros of f at a double: the catalogue's tests take that path).
+  EXPECT_GT(stages.interval, 60u) << stages.exact << " exact, " << stages.separating_direction << " separated";
+  EXPECT_LE(stages.integer + stages.exact, 2u);
   EXPECT_GT(stages.separating_direction, 300u);
   std::printf("stages: %llu separated, %llu interval, %llu integer, %llu exact\n",
               static_cast<unsigned long long>(stages.separating_direction),
