@@ -16,7 +16,11 @@
 //     just after t*, g_i > 0). Halving at doubles m with certain signs of f_i(m) narrows (a, b)
 //     to two consecutive doubles, the tight TOI (t* is not a double: f_i has a nonzero sign at
 //     every double examined);
-//  4. if all of [0, tmax] is free: no collision.
+//  4. if all of [0, tmax] is free: no collision;
+//  5. if the walk is undecided and every point lies in one plane, walks again without the
+//     point-triangle and edge-edge terms (the argument at step 5 below).
+// The signs of f at the doubles examined in step 3 are certified in double-double arithmetic
+// (distance_sign.hpp), exactly in integers only where that is not decisive.
 // Anything else (a sign that intervals cannot certify: tangent passes, a root that is a double,
 // two terms meeting at t*) returns "undecided" and the exact path answers.
 #pragma once
@@ -357,9 +361,9 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
   // f(t) = 0 only where n(t) = 0, where every g (a multiple of n) is 0 and the term fails.
   // By 4b.2 (docs/design.md) the earliest t* > 0 of S is a root of the f of a term holding
   // there, so not of these terms: at t* another term holds, and the walk without them finds
-  // the same t* (t* = 0 was ruled out in step 1, with every term), or no t* when S is empty.
-  // Where they hold before t*... they cannot: t* is the least element of S. Such queries (a
-  // 2D query, z = 0; a simulation in a plane) reach here when their edges or triangle become
+  // the same t* (t* = 0 was ruled out in step 1, with every term), or no t* when S is empty
+  // (the walk's terms are a subset). Such queries (a 2D query, z = 0; a simulation in a
+  // plane) reach here when their edges or triangle become
   // degenerate (n = 0) inside [0, tmax]: every g of the term vanishes there and intervals
   // cannot exclude it. The plane test is exact (GMP rationals: counted as integer signs).
   std::uint32_t planar = 0;
