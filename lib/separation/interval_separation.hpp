@@ -58,19 +58,27 @@ namespace interval_detail {
 
 using I = CGAL::Interval_nt<false>;
 
+/// p(t) by Horner's scheme, from p's highest coefficient that is not exactly [0, 0] (terms are
+/// stored with degree 6, most of them have a lower degree: for a finite t the skipped steps
+/// would compute [0, 0] t + [0, 0] = [0, 0], so the result is the same interval).
 template <int D>
 I evaluate(const contact::Poly<I, D>& p, const I& t) {
-  I r = p.c[D];
-  for (int k = D - 1; k >= 0; --k) r = r * t + p.c[k];
+  int k = D;
+  while (k > 0 && p.c[k].inf() == 0 && p.c[k].sup() == 0) --k;
+  I r = p.c[k];
+  for (--k; k >= 0; --k) r = r * t + p.c[k];
   return r;
 }
 
 /// 1 / -1 when the interval is certainly positive / negative, 0 otherwise.
 inline int certain_sign(const I& x) { return x.inf() > 0 ? 1 : x.sup() < 0 ? -1 : 0; }
 
+/// p' (coefficients above p's degree left exactly [0, 0], as evaluate expects).
 inline contact::Poly<I, 5> derivative(const Poly6<I>& p) {
   contact::Poly<I, 5> r;
-  for (int k = 1; k <= 6; ++k) r.c[k - 1] = p.c[k] * I(k);
+  int degree = 6;
+  while (degree > 0 && p.c[degree].inf() == 0 && p.c[degree].sup() == 0) --degree;
+  for (int k = 1; k <= 6; ++k) r.c[k - 1] = k <= degree ? p.c[k] * I(k) : I(0);
   return r;
 }
 
