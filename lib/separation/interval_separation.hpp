@@ -48,7 +48,7 @@ namespace exactccd::separation {
 struct IntervalVerdict {
   bool decided = false;
   std::optional<TimeInterval> toi;
-  bool used_integers = false;  ///< a sign was decided exactly with GMP integers
+  bool used_integers = false;  ///< GMP was used: an exact sign at a double, or the plane test (step 5)
   /// When undecided: the feature pairs not proven apart (use[f] false: feature f's term holds
   /// nowhere in [0, 1], feature_separated), for the exact path.
   std::array<bool, 9> use{true, true, true, true, true, true, true, true, true};
