@@ -126,6 +126,9 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method me
       return verdict.toi;
     }
     if (counters) ++counters->exact;
+    // The pairs a direction keeps apart hold nowhere: the exact path leaves them out.
+    return separation::exact_toi(exact::to_rational(q), RationalCcdParams{mpq_class(p.min_distance), mpq_class(p.tmax)},
+                                 verdict.use);
   }
   return separation::exact_toi(exact::to_rational(q), RationalCcdParams{mpq_class(p.min_distance), mpq_class(p.tmax)});
 }

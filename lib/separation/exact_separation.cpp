@@ -26,12 +26,15 @@ struct IntegerTerm {
 };
 
 template <class Query>
-std::optional<TimeInterval> earliest(const Query& q, const RationalCcdParams& params) {
+std::optional<TimeInterval> earliest(const Query& q, const RationalCcdParams& params, const FeatureMask* use = nullptr) {
   using Kind = kinds::kind_of<Query>;
   const mpq_class d2 = params.min_distance * params.min_distance;
   std::vector<IntegerTerm> terms;
   std::size_t bits = 0;
-  for (const Term<mpq_class>& t : separation::terms<Kind>(points3<mpq_class>(q), d2)) {
+  static_assert(Kind::features.size() <= std::tuple_size_v<FeatureMask>);
+  std::array<bool, Kind::features.size()> used;
+  for (std::size_t f = 0; f < used.size(); ++f) used[f] = !use || (*use)[f];
+  for (const Term<mpq_class>& t : separation::terms<Kind>(points3<mpq_class>(q), d2, used.data())) {
     IntegerTerm it{integer_poly(t.distance), {}};
     bits = std::max(bits, coefficient_bits(it.distance));
     for (int i = 0; i < t.positives; ++i) {
@@ -75,5 +78,18 @@ std::optional<TimeInterval> exact_toi(const RationalPointPointQuery& q, const Ra
 std::optional<TimeInterval> exact_toi(const RationalEdgeEdge2dQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
 std::optional<TimeInterval> exact_toi(const RationalPointEdge2dQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
 std::optional<TimeInterval> exact_toi(const RationalPointPoint2dQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
+
+#define EXACTCCD_EXACT_TOI_MASKED(Query)                                                                   \
+  std::optional<TimeInterval> exact_toi(const Query& q, const RationalCcdParams& p, const FeatureMask& use) { \
+    return earliest(q, p, &use);                                                                             \
+  }
+EXACTCCD_EXACT_TOI_MASKED(RationalVertexFaceQuery)
+EXACTCCD_EXACT_TOI_MASKED(RationalEdgeEdgeQuery)
+EXACTCCD_EXACT_TOI_MASKED(RationalPointEdgeQuery)
+EXACTCCD_EXACT_TOI_MASKED(RationalPointPointQuery)
+EXACTCCD_EXACT_TOI_MASKED(RationalEdgeEdge2dQuery)
+EXACTCCD_EXACT_TOI_MASKED(RationalPointEdge2dQuery)
+EXACTCCD_EXACT_TOI_MASKED(RationalPointPoint2dQuery)
+#undef EXACTCCD_EXACT_TOI_MASKED
 
 }  // namespace exactccd::separation

@@ -16,7 +16,11 @@
 //     just after t*, g_i > 0). Halving at doubles m with certain signs of f_i(m) narrows (a, b)
 //     to two consecutive doubles, the tight TOI (t* is not a double: f_i has a nonzero sign at
 //     every double examined);
-//  4. if all of [0, tmax] is free: no collision.
+//  4. if all of [0, tmax] is free: no collision;
+//  5. if the walk is undecided and every point lies in one plane, walks again without the
+//     point-triangle and edge-edge terms (the argument at step 5 below).
+// The signs of f at the doubles examined in step 3 are certified in double-double arithmetic
+// (distance_sign.hpp), exactly in integers only where that is not decisive.
 // Anything else (a sign that intervals cannot certify: tangent passes, a root that is a double,
 // two terms meeting at t*) returns "undecided" and the exact path answers.
 #pragma once
@@ -26,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -33,6 +38,7 @@
 #include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "separation/distance_sign.hpp"
 #include "separation/separating_direction.hpp"
 #include "separation/separation_terms.hpp"
 
@@ -42,26 +48,37 @@ namespace exactccd::separation {
 struct IntervalVerdict {
   bool decided = false;
   std::optional<TimeInterval> toi;
-  bool used_integers = false;  ///< a sign was decided exactly with GMP integers
+  bool used_integers = false;  ///< GMP was used: an exact sign at a double, or the plane test (step 5)
+  /// When undecided: the feature pairs not proven apart (use[f] false: feature f's term holds
+  /// nowhere in [0, 1], feature_separated), for the exact path.
+  std::array<bool, 9> use{true, true, true, true, true, true, true, true, true};
 };
 
 namespace interval_detail {
 
 using I = CGAL::Interval_nt<false>;
 
+/// p(t) by Horner's scheme, from p's highest coefficient that is not exactly [0, 0] (terms are
+/// stored with degree 6, most of them have a lower degree: for a finite t the skipped steps
+/// would compute [0, 0] t + [0, 0] = [0, 0], so the result is the same interval).
 template <int D>
 I evaluate(const contact::Poly<I, D>& p, const I& t) {
-  I r = p.c[D];
-  for (int k = D - 1; k >= 0; --k) r = r * t + p.c[k];
+  int k = D;
+  while (k > 0 && p.c[k].inf() == 0 && p.c[k].sup() == 0) --k;
+  I r = p.c[k];
+  for (--k; k >= 0; --k) r = r * t + p.c[k];
   return r;
 }
 
 /// 1 / -1 when the interval is certainly positive / negative, 0 otherwise.
 inline int certain_sign(const I& x) { return x.inf() > 0 ? 1 : x.sup() < 0 ? -1 : 0; }
 
+/// p' (coefficients above p's degree left exactly [0, 0], as evaluate expects).
 inline contact::Poly<I, 5> derivative(const Poly6<I>& p) {
   contact::Poly<I, 5> r;
-  for (int k = 1; k <= 6; ++k) r.c[k - 1] = p.c[k] * I(k);
+  int degree = 6;
+  while (degree > 0 && p.c[degree].inf() == 0 && p.c[degree].sup() == 0) --degree;
+  for (int k = 1; k <= 6; ++k) r.c[k - 1] = k <= degree ? p.c[k] * I(k) : I(0);
   return r;
 }
 
@@ -99,22 +116,16 @@ inline bool holds(const Term<I>& term, const I& t) {
   return true;
 }
 
-/// The exact sign of feature f's distance polynomial at the double m, from the positions at m
-/// (x: the query's rows as intervals, exact points): in interval arithmetic when that is
-/// certain, else exactly in rationals (a root at a double gives 0).
+/// The exact sign of feature f's distance polynomial at the double m in [0, 1], from the
+/// positions at m (x: the query's points3 rows in doubles): certified in double-double
+/// arithmetic when that is decisive (distance_sign.hpp), else exactly in integers (a root at a
+/// double gives 0). Needs round-to-nearest. `approximation`: as in certified_distance_sign
+/// (the same positive factor for every m of one query), when the double-double sign decides.
 template <std::size_t N>
-int distance_sign_at(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, double d, double m,
+int distance_sign_at(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double m,
                      double* approximation, bool& used_integers) {
   constexpr std::size_t P = N / 2;
-  std::array<Vec3T<I>, P> at;
-  const I mi(m);
-  const auto move = [&](const I& x0, const I& x1) { return x0 + mi * (x1 - x0); };
-  for (std::size_t p = 0; p < P; ++p)
-    at[p] = {move(x[p].x, x[p + P].x), move(x[p].y, x[p + P].y), move(x[p].z, x[p + P].z)};
-  const I value = distance_at(f, at, I(d) * I(d));
-  if (approximation) *approximation = CGAL::to_double(value);
-  const int s = certain_sign(value);
-  if (s != 0) return s;
+  if (const int s = certified_distance_sign(f, x, d, m, approximation); s != 0) return s;
   used_integers = true;
   // Exactly, in integers: every double is an integer times 2^e; scaling every length (the
   // coordinates and d) by one power of two 2^S multiplies f, homogeneous of degree 2, 4 or 6 in
@@ -131,7 +142,7 @@ int distance_sign_at(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, 
   };
   int E = ulp_exponent(d);
   for (std::size_t i = 0; i < N; ++i)
-    for (const I* c : {&x[i].x, &x[i].y, &x[i].z}) E = std::min(E, ulp_exponent(c->inf()));
+    for (const double c : {x[i].x, x[i].y, x[i].z}) E = std::min(E, ulp_exponent(c));
   if (E == std::numeric_limits<int>::max()) E = 0;  // everything is zero
   const auto scaled = [&](double v) {  // v 2^-E, an integer
     if (v == 0) return mpz_class(0);
@@ -145,9 +156,9 @@ int distance_sign_at(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, 
   const mpz_class M(std::ldexp(fm, 53));
   const mp_bitcnt_t K = static_cast<mp_bitcnt_t>(53 - em);
   std::array<Vec3T<Z>, P> exact;
-  const auto move_exactly = [&](const I& x0, const I& x1) {  // rows are points: inf() is the double
-    const mpz_class X0 = scaled(x0.inf());
-    return Z{{mpz_class((X0 << K) + M * (scaled(x1.inf()) - X0))}};
+  const auto move_exactly = [&](double x0, double x1) {
+    const mpz_class X0 = scaled(x0);
+    return Z{{mpz_class((X0 << K) + M * (scaled(x1) - X0))}};
   };
   for (std::size_t p = 0; p < P; ++p)
     exact[p] = {move_exactly(x[p].x, x[p + P].x), move_exactly(x[p].y, x[p + P].y),
@@ -156,16 +167,37 @@ int distance_sign_at(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, 
   return sgn(distance_at(f, exact, Z{{mpz_class(D * D)}}).c[0]);
 }
 
+/// True when every point of x lies in one plane (exactly, in GMP rationals): the points minus
+/// the first span at most a plane.
+template <std::size_t N>
+bool coplanar(const std::array<Vec3, N>& x) {
+  std::array<std::array<mpq_class, 3>, N> v;
+  for (std::size_t i = 0; i < N; ++i)
+    v[i] = {mpq_class(x[i].x) - mpq_class(x[0].x), mpq_class(x[i].y) - mpq_class(x[0].y),
+            mpq_class(x[i].z) - mpq_class(x[0].z)};
+  for (std::size_t i = 1; i < N; ++i)
+    for (std::size_t j = i + 1; j < N; ++j) {
+      const std::array<mpq_class, 3> n{mpq_class(v[i][1] * v[j][2] - v[i][2] * v[j][1]),
+                                       mpq_class(v[i][2] * v[j][0] - v[i][0] * v[j][2]),
+                                       mpq_class(v[i][0] * v[j][1] - v[i][1] * v[j][0])};
+      if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) continue;
+      for (std::size_t k = 1; k < N; ++k)
+        if (sgn(mpq_class(n[0] * v[k][0] + n[1] * v[k][1] + n[2] * v[k][2])) != 0) return false;
+      return true;  // n spans the normal of the plane through x[0], x[i], x[j]: all lie in it
+    }
+  return true;  // all on one line: in a plane
+}
+
 /// A guess of the root of feature f's distance in (a, b) (f(a) > 0 > f(b)): the Illinois
 /// variant of regula falsi on the distance evaluated from the geometry in long double. Only a
 /// guess: the caller certifies signs at whatever it returns.
 template <std::size_t N>
-double root_guess(const kinds::Feature& f, const std::array<Vec3T<I>, N>& x, double d, double a, double b) {
+double root_guess(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double a, double b) {
   constexpr std::size_t P = N / 2;
   using L = long double;
   const auto value = [&](L t) {
     std::array<Vec3T<L>, P> at;
-    const auto move = [&](const I& x0, const I& x1) { return L(x0.inf()) + t * (L(x1.inf()) - L(x0.inf())); };
+    const auto move = [&](double x0, double x1) { return L(x0) + t * (L(x1) - L(x0)); };
     for (std::size_t p = 0; p < P; ++p)
       at[p] = {move(x[p].x, x[p + P].x), move(x[p].y, x[p + P].y), move(x[p].z, x[p + P].z)};
     return distance_at(f, at, L(d) * L(d));
@@ -211,7 +243,8 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
   if (feature_of_term.empty()) return {true, std::nullopt};
   const auto x = points3<I>(q);
   const std::vector<Term<I>> terms = separation::terms<Kind>(x, I(d) * I(d), use.data());
-  const IntervalVerdict undecided{};
+  IntervalVerdict undecided{};
+  for (std::size_t f = 0; f < use.size(); ++f) undecided.use[f] = use[f];
   // 1. t = 0.
   bool all_fail_at_zero = true;
   for (const Term<I>& term : terms) {
@@ -219,95 +252,138 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
     all_fail_at_zero = all_fail_at_zero && excluded(term, 0.0, 0.0);
   }
   if (!all_fail_at_zero) return undecided;
-  // 2. Cells in time order (a stack of right halves).
-  constexpr int kMaxDepth = 48;
-  struct Cell {
-    double a, b;
-    int depth;
-  };
-  std::array<Cell, kMaxDepth + 2> stack;
-  int top = 0;
-  stack[top++] = {0.0, tmax, 0};
-  while (top > 0) {
-    const Cell cell = stack[--top];
-    int alive = -1, alive_count = 0;
-    for (std::size_t i = 0; i < terms.size(); ++i)
-      if (!excluded(terms[i], cell.a, cell.b)) {
-        alive = static_cast<int>(i);
-        ++alive_count;
-      }
-    if (alive_count == 0) continue;  // free of contact
-    if (alive_count == 1) {
-      // 3. One term left: a simple sign change of f with every g positive?
-      const Term<I>& term = terms[alive];
-      bool g_positive = true;
-      for (int k = 0; k < term.positives && g_positive; ++k)
-        g_positive = range(term.positive[k], cell.a, cell.b).inf() > 0;
-      if (g_positive && certain_sign(evaluate(term.distance, I(cell.a))) > 0 &&
-          certain_sign(evaluate(term.distance, I(cell.b))) < 0 &&
-          certain_sign(evaluate(derivative(term.distance), I(cell.a, cell.b))) != 0) {
-        const kinds::Feature& feature = Kind::features[feature_of_term[alive]];
-        // Narrowing: f(a) > 0 > f(b) around the single root. Each step examines one double m
-        // strictly inside (a, b), chosen by regula falsi on midpoint approximations of f(a) and
-        // f(b) (any choice is valid: only the certain sign at m is used), bisecting instead when
-        // the last two steps did not halve the cell, so that the cell shrinks geometrically.
-        double a = cell.a, b = cell.b;
-        bool used_integers = false;
-        // First a guess of the root from the geometry in long double (only a guess: any double
-        // of the cell may be examined), then the certain signs at the guess and at its
-        // neighbour on the root's side: where the guess is right to an ulp, two signs give the
-        // tight TOI (as the contact path's TOI narrowing does).
-        constexpr double kInf = std::numeric_limits<double>::infinity();
-        const double guess = root_guess(feature, x, d, a, b);
-        if (a < guess && guess < b) {
-          const int s = distance_sign_at(feature, x, d, guess, nullptr, used_integers);
-          if (s == 0) return {true, TimeInterval{guess, guess}, true};
-          const double neighbour = s > 0 ? std::nextafter(guess, kInf) : std::nextafter(guess, -kInf);
-          (s > 0 ? a : b) = guess;
-          if (a < neighbour && neighbour < b) {
-            const int t = distance_sign_at(feature, x, d, neighbour, nullptr, used_integers);
-            if (t == 0) return {true, TimeInterval{neighbour, neighbour}, true};
-            (t > 0 ? a : b) = neighbour;
-          }
+  // 2.-4. The walk over the cells, with the terms whose bits are set in `initial`.
+  const auto walk = [&](std::uint32_t initial) -> IntervalVerdict {
+    // 2. Cells in time order (a stack of right halves).
+    constexpr int kMaxDepth = 48;
+    // Each cell carries the terms not excluded on its parent (a bit per term): a term excluded
+    // on a cell holds nowhere in it, so nowhere in its halves, and is not examined again there.
+    struct Cell {
+      double a, b;
+      int depth;
+      std::uint32_t open;  // bit i: term i not excluded on the parent cell
+    };
+    static_assert(Kind::features.size() <= 9);  // IntervalVerdict::use
+    std::array<Cell, kMaxDepth + 2> stack;
+    int top = 0;
+    stack[top++] = {0.0, tmax, 0, initial};
+    while (top > 0) {
+      const Cell cell = stack[--top];
+      int alive = -1, alive_count = 0;
+      std::uint32_t open = 0;
+      for (std::size_t i = 0; i < terms.size(); ++i)
+        if ((cell.open >> i & 1) && !excluded(terms[i], cell.a, cell.b)) {
+          alive = static_cast<int>(i);
+          ++alive_count;
+          open |= std::uint32_t{1} << i;
         }
-        double fa = 0, fb = 0;
-        distance_sign_at(feature, x, d, a, &fa, used_integers);
-        distance_sign_at(feature, x, d, b, &fb, used_integers);
-        double previous_width = b - a;
-        bool bisect = false;
-        while (true) {
-          const double next_a = std::nextafter(a, std::numeric_limits<double>::infinity());
-          if (!(next_a < b)) break;  // consecutive doubles
-          double m = a + (b - a) / 2;
-          if (!bisect && fa > 0 && fb < 0) m = a + (b - a) * (fa / (fa - fb));
-          if (!(a < m && m < b)) m = a + (b - a) / 2;
-          if (!(a < m && m < b)) m = next_a;
-          double approximation = 0;
-          const int s = distance_sign_at(feature, x, d, m, &approximation, used_integers);
-          if (s == 0) return {true, TimeInterval{m, m}, true};  // f(m) = 0 exactly: t* = m
-          // The approximate value at m with the certain sign, for the next estimate.
-          const double fm = s * std::max(std::abs(approximation), 0x1p-1000);
-          if (s > 0) {
-            a = m;
-            fa = fm;
-          } else {
-            b = m;
-            fb = fm;
+      if (alive_count == 0) continue;  // free of contact
+      if (alive_count == 1) {
+        // 3. One term left: a simple sign change of f with every g positive?
+        const Term<I>& term = terms[alive];
+        bool g_positive = true;
+        for (int k = 0; k < term.positives && g_positive; ++k)
+          g_positive = range(term.positive[k], cell.a, cell.b).inf() > 0;
+        if (g_positive && certain_sign(evaluate(term.distance, I(cell.a))) > 0 &&
+            certain_sign(evaluate(term.distance, I(cell.b))) < 0 &&
+            certain_sign(evaluate(derivative(term.distance), I(cell.a, cell.b))) != 0) {
+          const kinds::Feature& feature = Kind::features[feature_of_term[alive]];
+          // Signs at doubles in double-double arithmetic, which needs round-to-nearest (restored
+          // to upward rounding when this scope ends; the stage returns from it).
+          const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+          // Narrowing: f(a) > 0 > f(b) around the single root. Each step examines one double m
+          // strictly inside (a, b) and keeps the half with the sign change; any choice of m is
+          // valid (only the certain sign at m is used), so m is chosen for speed.
+          double a = cell.a, b = cell.b;
+          bool used_integers = false;
+          // First a guess of the root from the geometry in long double (only a guess: any double
+          // of the cell may be examined), then the certain signs at the guess and at its
+          // neighbour on the root's side: where the guess is right to an ulp, two signs give the
+          // tight TOI (as the contact path's TOI narrowing does).
+          constexpr double kInf = std::numeric_limits<double>::infinity();
+          // Approximations of f (one positive factor for the whole query: distance_sign.hpp) at
+          // a and at b, for the estimates below; 0 when not computed yet.
+          double fa = 0, fb = 0;
+          const auto step = [&](double m) {  // the certain sign at m moves a or b; 0: f(m) = 0
+            double approximation = 0;
+            const int sign = distance_sign_at(feature, xd, d, m, &approximation, used_integers);
+            const double fm = sign * std::max(std::abs(approximation), 0x1p-1000);
+            if (sign > 0) a = m, fa = fm;
+            if (sign < 0) b = m, fb = fm;
+            return sign;
+          };
+          const double guess = root_guess(feature, xd, d, a, b);
+          if (a < guess && guess < b) {
+            const int s = step(guess);
+            if (s == 0) return {true, TimeInterval{guess, guess}, true};
+            const double neighbour = s > 0 ? std::nextafter(guess, kInf) : std::nextafter(guess, -kInf);
+            if (a < neighbour && neighbour < b && step(neighbour) == 0)
+              return {true, TimeInterval{neighbour, neighbour}, true};
           }
-          bisect = !bisect && (b - a) > previous_width / 2;
-          previous_width = b - a;
+          // Then regula falsi on the double-double approximations (Illinois: the end that stays
+          // twice has its value halved), the estimate moved to the nearest double inside (a, b)
+          // when it rounds onto an end (the root is then within an ulp or so of that end), and a
+          // bisection after three steps in a row that did not halve the cell, so that the cell
+          // shrinks at least geometrically.
+          if (std::nextafter(a, kInf) < b) {
+            if (fa == 0) certified_distance_sign(feature, xd, d, a, &fa);
+            if (fb == 0) certified_distance_sign(feature, xd, d, b, &fb);
+          }
+          int side = 0, slow = 0;
+          while (std::nextafter(a, kInf) < b) {
+            double m = a + (b - a) / 2;
+            if (slow < 3 && fa > 0 && fb < 0) {
+              m = a + (b - a) * (fa / (fa - fb));
+              if (!(m > a)) m = std::nextafter(a, kInf);
+              if (!(m < b)) m = std::nextafter(b, -kInf);
+            } else {
+              slow = 0;
+            }
+            if (!(a < m && m < b)) m = std::nextafter(a, kInf);
+            const double width = b - a;
+            const int s = step(m);
+            if (s == 0) return {true, TimeInterval{m, m}, true};  // f(m) = 0 exactly: t* = m
+            if (s == side) (s > 0 ? fb : fa) /= 2;
+            side = s;
+            slow = (b - a) > width / 2 ? slow + 1 : 0;
+          }
+          if (std::nextafter(a, std::numeric_limits<double>::infinity()) != b) return undecided;
+          return {true, TimeInterval{a, b}, used_integers};
         }
-        if (std::nextafter(a, std::numeric_limits<double>::infinity()) != b) return undecided;
-        return {true, TimeInterval{a, b}, used_integers};
       }
+      if (cell.depth >= kMaxDepth) return undecided;
+      const double m = cell.a + (cell.b - cell.a) / 2;
+      if (!(cell.a < m && m < cell.b)) return undecided;
+      stack[top++] = {m, cell.b, cell.depth + 1, open};  // right half, examined after the left one
+      stack[top++] = {cell.a, m, cell.depth + 1, open};
     }
-    if (cell.depth >= kMaxDepth) return undecided;
-    const double m = cell.a + (cell.b - cell.a) / 2;
-    if (!(cell.a < m && m < cell.b)) return undecided;
-    stack[top++] = {m, cell.b, cell.depth + 1};  // right half, examined after the left one
-    stack[top++] = {cell.a, m, cell.depth + 1};
+    return {true, std::nullopt};  // 4. every cell of [0, tmax] is free
+  };
+  const std::uint32_t all = (std::uint32_t{1} << terms.size()) - 1;
+  const IntervalVerdict verdict = walk(all);
+  if (verdict.decided) return verdict;
+  // 5. Coplanar queries: when every point lies in one fixed plane at t0 and at t1 (so at every
+  // t), the point-triangle and edge-edge terms never hold first at a t > 0, and the walk runs
+  // again without them. Their normal (n, or w) is normal to the plane or zero, and the vector
+  // to the other point (p - a, or r) lies in it, so h = 0 and f = -d^2 |n|^2 (d > 0 here):
+  // f(t) = 0 only where n(t) = 0, where every g (a multiple of n) is 0 and the term fails.
+  // By 4b.2 (docs/design.md) the earliest t* > 0 of S is a root of the f of a term holding
+  // there, so not of these terms: at t* another term holds, and the walk without them finds
+  // the same t* (t* = 0 was ruled out in step 1, with every term), or no t* when S is empty
+  // (the walk's terms are a subset). Such queries (a 2D query, z = 0; a simulation in a
+  // plane) reach here when their edges or triangle become
+  // degenerate (n = 0) inside [0, tmax]: every g of the term vanishes there and intervals
+  // cannot exclude it. The plane test is exact (GMP rationals: counted as integer signs).
+  std::uint32_t planar = 0;
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const kinds::FeaturePair pair = Kind::features[feature_of_term[i]].pair;
+    if (pair == kinds::FeaturePair::point_triangle || pair == kinds::FeaturePair::edge_edge) planar |= std::uint32_t{1} << i;
   }
-  return {true, std::nullopt};  // 4. every cell of [0, tmax] is free
+  if (planar == 0 || !(Kind::dimension == 2 || coplanar(xd))) return verdict;
+  IntervalVerdict again = walk(all & ~planar);
+  if (!again.decided) return verdict;
+  again.used_integers = again.used_integers || Kind::dimension == 3;
+  return again;
 }
 
 }  // namespace exactccd::separation
