@@ -164,6 +164,110 @@ StageResult factored_strategy(const Polys& P, const IntervalQuery& q, bool want_
   return {};
 }
 
+/// Sign oracle at a root t* of a factor of V that makes several rule polynomials vanish (their
+/// exact values are multiples of the factor): 0 for those, certified interval signs over the
+/// cell (which holds t*) for the others.
+struct FactorRootOracle {
+  Interval t;
+  std::array<const void*, 3> zero_at_candidate;
+  template <int D>
+  int operator()(const contact::Poly<Interval, D>& p) const {
+    for (const void* z : zero_at_candidate)
+      if (static_cast<const void*>(&p) == z) return 0;
+    return IntervalSignOracle{t}(p);
+  }
+};
+
+/// Edge-edge when the edge directions differ in one coordinate only (file comment, item 6):
+/// db_j = s da_j exactly for the two coordinates j != k (s = +1 or -1; parallel grid lines of a
+/// folding sheet). Then db = s da + Delta e_k with Delta = db_k - s da_k, so
+/// w = da x db = Delta (da x e_k), and V = da . (r x db) = -r . w = -Delta F with
+/// F = r . (da x e_k) (r = b0 - a0): V's roots in [0, 1] are those of the linear Delta and of
+/// the quadratic F. At a root of Delta all of w vanishes (the edges are parallel there) and the
+/// oracle knows it, so the rule takes its degenerate branch with certain signs, where the plain
+/// isolation of V could not tell w(t*) = 0 from a tiny nonzero value (a common root of V and w).
+template <class Polys, class IntervalQuery>
+StageResult parallel_factor_strategy(const Polys& P, const IntervalQuery& q, bool want_toi) {
+  if constexpr (contact::is_vertex_face_polys<Polys>::value) {
+    return {};
+  } else {
+    const auto r = rows(q);
+    using Linear = contact::Poly<Interval, 1>;
+    const contact::PolyVec3<Interval, 1> da = contact::relative_motion(r, 0, 1), db = contact::relative_motion(r, 2, 3),
+                                         rv = contact::relative_motion(r, 0, 2);
+    const auto component = [](const contact::PolyVec3<Interval, 1>& v, int j) -> const Linear& {
+      return j == 0 ? v.x : j == 1 ? v.y : v.z;
+    };
+    // An exactly known point interval x equals s y exactly.
+    const auto equal_times = [](const Interval& x, const Interval& y, double s) {
+      return x.inf() == x.sup() && y.inf() == y.sup() && x.inf() == s * y.inf();
+    };
+    const auto same_component = [&](int j, double s) {
+      const Linear &a = component(da, j), &b = component(db, j);
+      return equal_times(b.c[0], a.c[0], s) && equal_times(b.c[1], a.c[1], s);
+    };
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      for (const double s : {1.0, -1.0}) {
+        if (!same_component(i, s) || !same_component(j, s)) continue;
+        const Linear &da_k = component(da, k), &db_k = component(db, k);
+        const Linear delta{{db_k.c[0] - Interval(s) * da_k.c[0], db_k.c[1] - Interval(s) * da_k.c[1]}};
+        // (i, j, k) cyclic: e_i x e_k = -e_j and e_j x e_k = e_i, so da x e_k = da_j e_i - da_i e_j
+        // and F = r . (da x e_k) = r_i da_j - r_j da_i.
+        const contact::Poly<Interval, 2> F = component(rv, i) * component(da, j) - component(rv, j) * component(da, i);
+        if (exactly_zero(delta) || exactly_zero(F)) return {};  // V = 0 for all t: not this case
+        RootCells delta_cells, f_cells;
+        if (isolate_roots(delta, delta_cells) == Isolation::failed || isolate_roots(F, f_cells) == Isolation::failed)
+          return {};
+        struct Candidate {
+          RootCell cell;
+          bool of_delta;
+        };
+        boost::container::small_vector<Candidate, 3> candidates;
+        for (const RootCell& c : delta_cells) candidates.push_back({c, true});
+        for (const RootCell& c : f_cells) candidates.push_back({c, false});
+        std::sort(candidates.begin(), candidates.end(),
+                  [](const Candidate& a, const Candidate& b) { return a.cell.lo < b.cell.lo; });
+        for (std::size_t n = 1; n < candidates.size(); ++n) {
+          const RootCell &a = candidates[n - 1].cell, &b = candidates[n].cell;
+          if (!(a.hi < b.lo || (a.hi == b.lo && !(a.is_point() && b.is_point())))) return {};  // unordered
+        }
+        const auto& w = P.direction_cross();
+        for (Candidate& c : candidates) {
+          CellVerdict v = CellVerdict::uncertain;
+          if (c.of_delta) {
+            // At Delta's root w = 0 exactly; retry on a narrower cell while uncertain.
+            for (int attempt = 0; attempt < 3; ++attempt) {
+              const contact::Truth t =
+                  contact::in_plane_contact(P, FactorRootOracle{Interval(c.cell.lo, c.cell.hi), {&w.x, &w.y, &w.z}});
+              if (t != contact::Truth::unknown) {
+                v = t == contact::Truth::yes ? CellVerdict::contact : CellVerdict::no_contact;
+                break;
+              }
+              if (c.cell.is_point()) break;
+              const RootCell before = c.cell;
+              narrow(delta, c.cell, attempt == 0 ? 16 : 1100);
+              if (c.cell.lo == before.lo && c.cell.hi == before.hi) break;
+            }
+          } else {
+            v = in_plane_verdict(P, F, false, c.cell);
+          }
+          if (v == CellVerdict::uncertain) return {};  // the earliest undecided candidate blocks the rest
+          if (v == CellVerdict::no_contact) continue;
+          StageResult result{Verdict::collision, std::nullopt};
+          if (want_toi) {
+            const Narrowing n = c.of_delta ? narrow(delta, c.cell, 1100) : narrow(F, c.cell, 1100);
+            if (n == Narrowing::done) result.toi = TimeInterval{c.cell.lo, c.cell.hi};
+          }
+          return result;
+        }
+        return {Verdict::no_collision, std::nullopt};
+      }
+    }
+    return {};
+  }
+}
+
 /// The in-plane rule with every sign certified over all of [0, 1]: a certain answer holds at
 /// every t there (an exact [0, 0] value means the polynomial vanishes on [0, 1]).
 template <class Polys>
