@@ -198,14 +198,19 @@ StageResult parallel_factor_strategy(const Polys& P, const IntervalQuery& q, boo
     const auto component = [](const contact::PolyVec3<Interval, 1>& v, int j) -> const Linear& {
       return j == 0 ? v.x : j == 1 ? v.y : v.z;
     };
-    // An exactly known point interval x equals s y exactly.
-    const auto equal_times = [](const Interval& x, const Interval& y, double s) {
-      return x.inf() == x.sup() && y.inf() == y.sup() && x.inf() == s * y.inf();
+    // (b1 - b0)_j = s (a1 - a0)_j exactly at both ends (then as polynomials in t): the same
+    // input doubles (b0 = a0 and b1 = a1 for s = +1, swapped for s = -1), or differences that
+    // are exact (point intervals) and equal up to s.
+    const auto coordinate = [](const Vec3T<Interval>& v, int j) { return j == 0 ? v.x : j == 1 ? v.y : v.z; };
+    const auto same_at_end = [&](int j, double s, int end) {
+      const int o = 4 * end;
+      const double a0 = coordinate(r[o], j).inf(), a1 = coordinate(r[o + 1], j).inf();
+      const double b0 = coordinate(r[o + 2], j).inf(), b1 = coordinate(r[o + 3], j).inf();
+      if (s > 0 ? (a0 == b0 && a1 == b1) : (a0 == b1 && a1 == b0)) return true;
+      const Interval a = coordinate(r[o + 1], j) - coordinate(r[o], j), b = coordinate(r[o + 3], j) - coordinate(r[o + 2], j);
+      return a.inf() == a.sup() && b.inf() == b.sup() && b.inf() == s * a.inf();
     };
-    const auto same_component = [&](int j, double s) {
-      const Linear &a = component(da, j), &b = component(db, j);
-      return equal_times(b.c[0], a.c[0], s) && equal_times(b.c[1], a.c[1], s);
-    };
+    const auto same_component = [&](int j, double s) { return same_at_end(j, s, 0) && same_at_end(j, s, 1); };
     for (int k = 0; k < 3; ++k) {
       const int i = (k + 1) % 3, j = (k + 2) % 3;
       for (const double s : {1.0, -1.0}) {
@@ -226,11 +231,36 @@ StageResult parallel_factor_strategy(const Polys& P, const IntervalQuery& q, boo
         boost::container::small_vector<Candidate, 3> candidates;
         for (const RootCell& c : delta_cells) candidates.push_back({c, true});
         for (const RootCell& c : f_cells) candidates.push_back({c, false});
-        std::sort(candidates.begin(), candidates.end(),
-                  [](const Candidate& a, const Candidate& b) { return a.cell.lo < b.cell.lo; });
-        for (std::size_t n = 1; n < candidates.size(); ++n) {
-          const RootCell &a = candidates[n - 1].cell, &b = candidates[n].cell;
-          if (!(a.hi < b.lo || (a.hi == b.lo && !(a.is_point() && b.is_point())))) return {};  // unordered
+        // Order the candidates: isolating cells of the two factors may overlap (a linear Delta's
+        // cell is [0, 1]); narrow both by certified bisection of their own factor until they
+        // are disjoint. The same exact point for both (a common root) is one candidate, Delta's
+        // (its oracle knows more). Still overlapping after the budget: leave it to later stages.
+        const auto defining_narrow = [&](Candidate& c) {
+          const RootCell before = c.cell;
+          if (c.of_delta)
+            narrow(delta, c.cell, 1);
+          else
+            narrow(F, c.cell, 1);
+          return c.cell.lo != before.lo || c.cell.hi != before.hi;
+        };
+        for (int round = 0;; ++round) {
+          std::sort(candidates.begin(), candidates.end(),
+                    [](const Candidate& a, const Candidate& b) { return a.cell.lo < b.cell.lo; });
+          std::size_t clash = 0;
+          for (std::size_t n = 1; n < candidates.size() && clash == 0; ++n) {
+            const RootCell &a = candidates[n - 1].cell, &b = candidates[n].cell;
+            if (a.is_point() && b.is_point() && a.lo == b.lo) {
+              candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(candidates[n - 1].of_delta ? n : n - 1));
+              clash = candidates.size() + 1;  // changed: sort and scan again
+            } else if (!(a.hi < b.lo || (a.hi == b.lo && !(a.is_point() && b.is_point())))) {
+              clash = n;
+            }
+          }
+          if (clash == 0) break;
+          if (clash > candidates.size()) continue;
+          if (round == 64) return {};  // unordered
+          const bool left = defining_narrow(candidates[clash - 1]), right = defining_narrow(candidates[clash]);
+          if (!left && !right) return {};
         }
         const auto& w = P.direction_cross();
         for (Candidate& c : candidates) {
