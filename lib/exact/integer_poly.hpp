@@ -1,4 +1,4 @@
-// Exact univariate polynomials of degree <= 4 with integer coefficients (GMP mpz_class), and
+// Exact univariate polynomials of degree <= 4 with integer coefficients, and
 // the few algebraic operations the integer stage needs: exact signs at dyadic points, primitive
 // gcds, square-free parts and Bernstein root isolation on [0, 1].
 //
@@ -6,6 +6,10 @@
 // is generic (any degree, modular gcds, bitstream Descartes) and costs 50-500 us per query on
 // the degenerate benchmark data (measured, docs/design.md). The contact polynomials have
 // degree <= 4, so the same exact decisions fit in a few hundred GMP operations.
+//
+// Everything is a template on the integer type Z, instantiated (integer_poly.cpp) for GMP's
+// mpz_class and for exact::FixedInteger (integer_ops.hpp: 1024 bits, no allocation, overflow
+// throws std::overflow_error). The names without T (IntegerPoly, Dyadic, ...) are the GMP ones.
 #pragma once
 
 #include <gmpxx.h>
@@ -14,54 +18,69 @@
 #include <optional>
 #include <vector>
 
+#include "exact/integer_ops.hpp"
+
 namespace exactccd::exact {
 
 /// p(t) = c[0] + c[1] t + ... + c[deg] t^deg, deg = -1 for the zero polynomial.
-struct IntegerPoly {
-  std::array<mpz_class, 5> c;
+template <class Z>
+struct IntegerPolyT {
+  std::array<Z, 5> c;
   int deg = -1;
 
   /// Sets deg to the index of the highest nonzero coefficient.
-  void normalize();
+  void normalize() {
+    deg = 4;
+    while (deg >= 0 && sgn(c[deg]) == 0) --deg;
+  }
   bool is_zero() const { return deg < 0; }
-  const mpz_class& leading() const { return c[deg]; }
+  const Z& leading() const { return c[deg]; }
 };
 
 /// A dyadic rational a / 2^k (k >= 0): the exact times the integer stage works with.
-struct Dyadic {
-  mpz_class a;
+template <class Z>
+struct DyadicT {
+  Z a;
   unsigned k = 0;
 };
 
 /// Sign of p at a / 2^k, exactly.
-int sign_at(const IntegerPoly& p, const Dyadic& x);
+template <class Z>
+int sign_at(const IntegerPolyT<Z>& p, const DyadicT<Z>& x);
 
 /// Sign of p at the double t (every double is a dyadic rational), exactly.
-int sign_at(const IntegerPoly& p, double t);
+template <class Z>
+int sign_at(const IntegerPolyT<Z>& p, double t);
 
 /// The exact dyadic value of a finite double in [0, 1].
-Dyadic to_dyadic(double t);
+template <class Z = mpz_class>
+DyadicT<Z> to_dyadic(double t);
 
 /// p divided by the gcd of its coefficients, with a positive leading coefficient.
-IntegerPoly primitive_part(const IntegerPoly& p);
+template <class Z>
+IntegerPolyT<Z> primitive_part(const IntegerPolyT<Z>& p);
 
 /// The derivative of p.
-IntegerPoly derivative(const IntegerPoly& p);
+template <class Z>
+IntegerPolyT<Z> derivative(const IntegerPolyT<Z>& p);
 
 /// gcd(p, q) up to a constant factor, primitive (primitive PRS). Both must be nonzero.
-IntegerPoly gcd(const IntegerPoly& p, const IntegerPoly& q);
+template <class Z>
+IntegerPolyT<Z> gcd(const IntegerPolyT<Z>& p, const IntegerPolyT<Z>& q);
 
 /// A polynomial with the same real roots as p, all simple: p itself when its discriminant is
 /// nonzero, otherwise the primitive part of p / gcd(p, p'). p must be nonzero.
-IntegerPoly square_free_part(const IntegerPoly& p);
+template <class Z>
+IntegerPolyT<Z> square_free_part(const IntegerPolyT<Z>& p);
 
 /// A real root of a square-free polynomial in [0, 1]: either exactly the dyadic `at`, or the
 /// only root in the open cell (lo, hi) of dyadic endpoints, where the polynomial has opposite
 /// nonzero signs at lo and hi.
-struct IsolatedRoot {
+template <class Z>
+struct IsolatedRootT {
   bool exact = false;
-  Dyadic at;      // when exact
-  Dyadic lo, hi;  // when not exact: lo.k == hi.k, hi.a == lo.a + 1
+  DyadicT<Z> at;      // when exact
+  DyadicT<Z> lo, hi;  // when not exact: lo.k == hi.k, hi.a == lo.a + 1
   int sign_at_lo = 0;
 };
 
@@ -69,20 +88,23 @@ struct IsolatedRoot {
 /// exact integer coefficients; Descartes' rule of signs in the Bernstein basis decides each
 /// dyadic cell), or nullopt when a cell deeper than max_depth is undecided (p has a multiple
 /// root there, or roots closer than 2^-max_depth). Every root returned is simple.
-std::optional<std::vector<IsolatedRoot>> roots_in_unit_interval(const IntegerPoly& p,
-                                                                 unsigned max_depth);
+template <class Z>
+std::optional<std::vector<IsolatedRootT<Z>>> roots_in_unit_interval(const IntegerPolyT<Z>& p, unsigned max_depth);
 
 /// The roots in [0, 1] of a nonzero polynomial and the polynomial that defines them: p itself
 /// when its roots there are simple, else its square-free part.
-struct RootsOf {
-  IntegerPoly defining;
-  std::vector<IsolatedRoot> roots;
+template <class Z>
+struct RootsOfT {
+  IntegerPolyT<Z> defining;
+  std::vector<IsolatedRootT<Z>> roots;
 };
-RootsOf isolate_roots(const IntegerPoly& p);
+template <class Z>
+RootsOfT<Z> isolate_roots(const IntegerPolyT<Z>& p);
 
 /// The sign of q on the whole closed cell [lo, lo + 2^-lo.k] when it is constant and nonzero
 /// there (certified by the signs of q's Bernstein coefficients on the cell), otherwise 0.
-int sign_on_cell(const IntegerPoly& q, const Dyadic& lo);
+template <class Z>
+int sign_on_cell(const IntegerPolyT<Z>& q, const DyadicT<Z>& lo);
 
 /// Refines a non-exact root of p with a long-double approximation, checked exactly:
 /// - the root becomes exact when it is one of the three doubles nearest to the approximation
@@ -91,7 +113,8 @@ int sign_on_cell(const IntegerPoly& q, const Dyadic& lo);
 ///   exact signs of p at the new ends confirm it (p has one root in the old cell, so the new
 ///   cell holds the same root).
 /// Either way the root is unchanged and certain; only the work of later sign queries drops.
-void refine_with_approximation(const IntegerPoly& p, IsolatedRoot& r);
+template <class Z>
+void refine_with_approximation(const IntegerPolyT<Z>& p, IsolatedRootT<Z>& r);
 
 constexpr unsigned kRefinedCellBits = 56;  // long-double guesses of ill-conditioned roots err by ~2^-60
 
@@ -103,6 +126,12 @@ double approximate_root(const std::array<long double, 5>& c, int deg, double lo,
 
 /// Halves the cell of a non-exact root once (exact sign of p at the midpoint); the root becomes
 /// exact when the midpoint is the root.
-void bisect(const IntegerPoly& p, IsolatedRoot& r);
+template <class Z>
+void bisect(const IntegerPolyT<Z>& p, IsolatedRootT<Z>& r);
+
+using IntegerPoly = IntegerPolyT<mpz_class>;
+using Dyadic = DyadicT<mpz_class>;
+using IsolatedRoot = IsolatedRootT<mpz_class>;
+using RootsOf = RootsOfT<mpz_class>;
 
 }  // namespace exactccd::exact

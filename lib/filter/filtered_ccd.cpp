@@ -53,6 +53,13 @@ std::optional<TimeInterval> through_stages(const Query& input, bool want_toi, St
     if (interval.toi_cell)  // the TOI is V's simple root in this cell: narrow it exactly
       if (auto toi = toi_in_cell(q, *interval.toi_cell)) return toi;
   }
+  // The integer stage, first in fixed-width integers (no allocation), then in GMP when the
+  // fixed one overflows or is not tried (integer_stage.hpp, fixed_integer_stage).
+  const StageResult fixed = fixed_integer_stage(q, want_toi);
+  if (fixed.verdict != Verdict::uncertain) {
+    if (interval.verdict == Verdict::uncertain) count(counters, &StageCounters::fixed_integer);
+    return answer(fixed);
+  }
   const StageResult integer = integer_stage(q, want_toi);
   if (integer.verdict != Verdict::uncertain) {
     if (interval.verdict == Verdict::uncertain) count(counters, &StageCounters::integer);

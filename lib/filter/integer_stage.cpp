@@ -36,18 +36,19 @@
 namespace exactccd::filter {
 namespace {
 
-using exact::Dyadic;
-using exact::IntegerPoly;
-using exact::IsolatedRoot;
+using exact::DyadicT;
+using exact::IntegerPolyT;
+using exact::IsolatedRootT;
 
 /// Cells narrower than 2^-kMaxRefinementBits are left to the CGAL path (measured: a sign that
 /// needed ~1000 bisections took 140 ms here, 11 ms in CGAL's kernel).
 constexpr unsigned kMaxRefinementBits = 192;
 
 /// A candidate time: a simple root of the polynomial *defining.
+template <class Z>
 struct Candidate {
-  IsolatedRoot root;
-  const IntegerPoly* defining = nullptr;  // unused when root.exact
+  IsolatedRootT<Z> root;
+  const IntegerPolyT<Z>* defining = nullptr;  // unused when root.exact
 };
 
 using Interval = CGAL::Interval_nt<false>;  // only under Protect_FPU_rounding
@@ -55,91 +56,97 @@ using Interval = CGAL::Interval_nt<false>;  // only under Protect_FPU_rounding
 /// A polynomial of the rule seen twice: its interval version (from the double query, built
 /// up front) and a thunk building its exact integer version on first need. Most signs are
 /// certain in intervals over the candidate's (narrow) cell; only the others cost GMP work.
-template <int D>
+template <class Z, int D>
 struct DualPoly {
   const contact::Poly<Interval, D>* approx;
-  std::function<const contact::Poly<Integer, D>&()> exact;
+  std::function<const contact::Poly<Z, D>&()> exact;
 };
 
-template <int D, class Exact>
-DualPoly<D> dual(const contact::Poly<Interval, D>& approx, Exact&& exact) {
+template <class Z, int D, class Exact>
+DualPoly<Z, D> dual(const contact::Poly<Interval, D>& approx, Exact&& exact) {
   return {&approx, std::forward<Exact>(exact)};
 }
 
 /// "Point on segment" polynomials as duals (see contact::PointOnSegmentPolys).
+template <class Z>
 struct DualSegment {
-  Vec3T<DualPoly<2>> cross;
-  DualPoly<2> dot;
+  Vec3T<DualPoly<Z, 2>> cross;
+  DualPoly<Z, 2> dot;
 };
 
 /// The accessors of VertexFacePolys / EdgeEdgePolys over pairs (interval, exact): the contact
 /// rule runs on this unchanged (it is generic over the polynomial set).
+template <class Z>
 struct DualVertexFace {
   const contact::VertexFacePolys<Interval>& I;
-  const contact::VertexFacePolys<Integer>& Z;
-  Vec3T<DualPoly<2>> normal() const {
+  const contact::VertexFacePolys<Z>& E;
+  Vec3T<DualPoly<Z, 2>> normal() const {
     const auto& n = I.normal();
-    const auto* z = &Z;
-    return {dual(n.x, [z]() -> const auto& { return z->normal().x; }),
-            dual(n.y, [z]() -> const auto& { return z->normal().y; }),
-            dual(n.z, [z]() -> const auto& { return z->normal().z; })};
+    const auto* z = &E;
+    return {dual<Z>(n.x, [z]() -> const auto& { return z->normal().x; }),
+            dual<Z>(n.y, [z]() -> const auto& { return z->normal().y; }),
+            dual<Z>(n.z, [z]() -> const auto& { return z->normal().z; })};
   }
-  DualPoly<4> barycentric(int i) const {
-    const auto* z = &Z;
-    return dual(I.barycentric(i), [z, i]() -> const auto& { return z->barycentric(i); });
+  DualPoly<Z, 4> barycentric(int i) const {
+    const auto* z = &E;
+    return dual<Z>(I.barycentric(i), [z, i]() -> const auto& { return z->barycentric(i); });
   }
-  DualSegment on_edge(int i) const {
+  DualSegment<Z> on_edge(int i) const {
     const auto& s = I.on_edge(i);
-    const auto* z = &Z;
-    return {{dual(s.cross.x, [z, i]() -> const auto& { return z->on_edge(i).cross.x; }),
-             dual(s.cross.y, [z, i]() -> const auto& { return z->on_edge(i).cross.y; }),
-             dual(s.cross.z, [z, i]() -> const auto& { return z->on_edge(i).cross.z; })},
-            dual(s.dot, [z, i]() -> const auto& { return z->on_edge(i).dot; })};
+    const auto* z = &E;
+    return {{dual<Z>(s.cross.x, [z, i]() -> const auto& { return z->on_edge(i).cross.x; }),
+             dual<Z>(s.cross.y, [z, i]() -> const auto& { return z->on_edge(i).cross.y; }),
+             dual<Z>(s.cross.z, [z, i]() -> const auto& { return z->on_edge(i).cross.z; })},
+            dual<Z>(s.dot, [z, i]() -> const auto& { return z->on_edge(i).dot; })};
   }
 };
 
+template <class Z>
 struct DualEdgeEdge {
   const contact::EdgeEdgePolys<Interval>& I;
-  const contact::EdgeEdgePolys<Integer>& Z;
-  Vec3T<DualPoly<2>> direction_cross() const {
+  const contact::EdgeEdgePolys<Z>& E;
+  Vec3T<DualPoly<Z, 2>> direction_cross() const {
     const auto& w = I.direction_cross();
-    const auto* z = &Z;
-    return {dual(w.x, [z]() -> const auto& { return z->direction_cross().x; }),
-            dual(w.y, [z]() -> const auto& { return z->direction_cross().y; }),
-            dual(w.z, [z]() -> const auto& { return z->direction_cross().z; })};
+    const auto* z = &E;
+    return {dual<Z>(w.x, [z]() -> const auto& { return z->direction_cross().x; }),
+            dual<Z>(w.y, [z]() -> const auto& { return z->direction_cross().y; }),
+            dual<Z>(w.z, [z]() -> const auto& { return z->direction_cross().z; })};
   }
-  DualPoly<4> parameter(int i) const {
-    const auto* z = &Z;
-    return dual(I.parameter(i), [z, i]() -> const auto& { return z->parameter(i); });
+  DualPoly<Z, 4> parameter(int i) const {
+    const auto* z = &E;
+    return dual<Z>(I.parameter(i), [z, i]() -> const auto& { return z->parameter(i); });
   }
-  DualSegment endpoint_on_edge(int i) const {
+  DualSegment<Z> endpoint_on_edge(int i) const {
     const auto& s = I.endpoint_on_edge(i);
-    const auto* z = &Z;
-    return {{dual(s.cross.x, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.x; }),
-             dual(s.cross.y, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.y; }),
-             dual(s.cross.z, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.z; })},
-            dual(s.dot, [z, i]() -> const auto& { return z->endpoint_on_edge(i).dot; })};
+    const auto* z = &E;
+    return {{dual<Z>(s.cross.x, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.x; }),
+             dual<Z>(s.cross.y, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.y; }),
+             dual<Z>(s.cross.z, [z, i]() -> const auto& { return z->endpoint_on_edge(i).cross.z; })},
+            dual<Z>(s.dot, [z, i]() -> const auto& { return z->endpoint_on_edge(i).dot; })};
   }
 };
 
-DualVertexFace dual_polys(const contact::VertexFacePolys<Interval>& I,
-                          const contact::VertexFacePolys<Integer>& Z) {
-  return {I, Z};
+template <class Z>
+DualVertexFace<Z> dual_polys(const contact::VertexFacePolys<Interval>& I, const contact::VertexFacePolys<Z>& E) {
+  return {I, E};
 }
-DualEdgeEdge dual_polys(const contact::EdgeEdgePolys<Interval>& I, const contact::EdgeEdgePolys<Integer>& Z) {
-  return {I, Z};
+template <class Z>
+DualEdgeEdge<Z> dual_polys(const contact::EdgeEdgePolys<Interval>& I, const contact::EdgeEdgePolys<Z>& E) {
+  return {I, E};
 }
 
 /// A double interval holding the dyadic cell [lo, hi] (0 <= lo <= hi <= 1), computed with
 /// integer arithmetic and exact scalings only: no dependence on the rounding mode. With
-/// mpz_get_d_2exp's mantissa m (truncated, in [0.5, 1), at most 53 bits) and exponent x,
-/// d >= m 2^x and d < 2^x. While m 2^x is a normal double (x >= -1021) ldexp is exact; below
-/// that it could round (in either direction), so the bounds are 0 and 2^-1021 instead, which
-/// hold d as well (a cell that close to t = 0 only costs interval precision).
-std::pair<double, double> enclosing_doubles(const Dyadic& lo, const Dyadic& hi) {
-  const auto split = [](const Dyadic& d, long& x) {
+/// the truncated mantissa m (in [0.5, 1), at most 53 bits; exact::truncated_mantissa, as
+/// mpz_get_d_2exp) and exponent x, d >= m 2^x and d < 2^x. While m 2^x is a normal double
+/// (x >= -1021) ldexp is exact; below that it could round (in either direction), so the bounds
+/// are 0 and 2^-1021 instead, which hold d as well (a cell that close to t = 0 only costs
+/// interval precision).
+template <class Z>
+std::pair<double, double> enclosing_doubles(const DyadicT<Z>& lo, const DyadicT<Z>& hi) {
+  const auto split = [](const DyadicT<Z>& d, long& x) {
     long e = 0;
-    const double m = mpz_get_d_2exp(&e, d.a.get_mpz_t());  // truncated mantissa in [0.5, 1), or 0
+    const double m = exact::truncated_mantissa(d.a, e);  // truncated mantissa in [0.5, 1), or 0
     x = e - static_cast<long>(d.k);
     return m;
   };
@@ -152,12 +159,13 @@ std::pair<double, double> enclosing_doubles(const Dyadic& lo, const Dyadic& hi) 
 
 /// Exact sign oracle at a candidate; tries the interval polynomial over the candidate's cell
 /// first, then the exact integer one (refining the cell as it goes).
+template <class Z>
 struct RootSignOracle {
-  Candidate& candidate;
+  Candidate<Z>& candidate;
 
   template <int D>
-  int operator()(const DualPoly<D>& p) const {
-    IsolatedRoot& r = candidate.root;
+  int operator()(const DualPoly<Z, D>& p) const {
+    IsolatedRootT<Z>& r = candidate.root;
     {
       const auto [lo, hi] = r.exact ? enclosing_doubles(r.at, r.at) : enclosing_doubles(r.lo, r.hi);
       CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
@@ -166,11 +174,11 @@ struct RootSignOracle {
       if (value.sup() < 0) return -1;
       if (value.inf() == 0 && value.sup() == 0) return 0;  // exactly zero on the whole cell
     }
-    const IntegerPoly q = integer_poly(p.exact());
+    const IntegerPolyT<Z> q = integer_poly(p.exact());
     if (q.is_zero()) return 0;
     if (r.exact) return exact::sign_at(q, r.at);
     if (const int s = exact::sign_on_cell(q, r.lo); s != 0) return s;
-    const IntegerPoly g = exact::gcd(*candidate.defining, q);
+    const IntegerPolyT<Z> g = exact::gcd(*candidate.defining, q);
     if (g.deg >= 1 && exact::sign_at(g, r.lo) * exact::sign_at(g, r.hi) < 0) return 0;
     for (;;) {
       const int s = exact::sign_on_cell(q, r.lo);
@@ -184,27 +192,24 @@ struct RootSignOracle {
   }
 };
 
-mpq_class value(const Dyadic& d) {
-  mpq_class x(d.a);
-  mpq_div_2exp(x.get_mpq_t(), x.get_mpq_t(), d.k);
-  return x;
-}
-
 /// The tightest double interval around a dyadic in [0, 1].
-TimeInterval enclose(const Dyadic& d) {
-  const mpq_class x = value(d);
-  const double lo = x.get_d();  // truncation: rounds down for x >= 0
-  if (mpq_class(lo) == x) return {lo, lo};
+template <class Z>
+TimeInterval enclose(const DyadicT<Z>& d) {
+  bool exact = false;
+  const double lo = exact::floor_to_double(d.a, d.k, exact);
+  if (exact) return {lo, lo};
   return {lo, std::nextafter(lo, std::numeric_limits<double>::infinity())};
 }
 
 /// The tightest double interval around a candidate.
-TimeInterval enclose(Candidate c) {
+template <class Z>
+TimeInterval enclose(Candidate<Z> c) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  IsolatedRoot& r = c.root;
+  IsolatedRootT<Z>& r = c.root;
   for (;;) {
     if (r.exact) return enclose(r.at);
-    const double below = value(r.lo).get_d();            // <= lo
+    bool exact = false;
+    const double below = exact::floor_to_double(r.lo.a, r.lo.k, exact);  // <= lo
     const TimeInterval above = enclose(r.hi);             // hi <= above.hi
     if (std::nextafter(below, kInf) >= above.hi) return {below, above.hi};  // lo < t < hi
     exact::bisect(*c.defining, r);
@@ -216,14 +221,14 @@ bool earlier(const TimeInterval& a, const TimeInterval& b) {
   return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
 }
 
-template <class IntegerQuery, class Query>
+template <class Z, class IntegerQuery, class Query>
 StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, bool want_toi) {
-  std::deque<IntegerPoly> defining;  // stable addresses for Candidate::defining
-  std::vector<Candidate> candidates;
-  const auto add_roots_of = [&](const IntegerPoly& p) {  // returns how many roots it added
-    exact::RootsOf found = exact::isolate_roots(p);
+  std::deque<IntegerPolyT<Z>> defining;  // stable addresses for Candidate::defining
+  std::vector<Candidate<Z>> candidates;
+  const auto add_roots_of = [&](const IntegerPolyT<Z>& p) {  // returns how many roots it added
+    exact::RootsOfT<Z> found = exact::isolate_roots(p);
     defining.push_back(std::move(found.defining));
-    for (IsolatedRoot& r : found.roots) {
+    for (IsolatedRootT<Z>& r : found.roots) {
       exact::refine_with_approximation(defining.back(), r);
       candidates.push_back({std::move(r), &defining.back()});
     }
@@ -231,14 +236,14 @@ StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, 
   };
 
   const auto P = contact::polynomials(q);
-  const IntegerPoly v = integer_poly(P.volume());
+  const IntegerPolyT<Z> v = integer_poly(P.volume());
   const bool coplanar = v.is_zero();
   if (!coplanar) add_roots_of(v);  // increasing order
   if (!coplanar && candidates.empty()) return {Verdict::no_collision, std::nullopt};
 
   if (coplanar) {
-    for (const Dyadic& end : {Dyadic{0, 0}, Dyadic{1, 0}}) {
-      Candidate c;
+    for (const DyadicT<Z>& end : {DyadicT<Z>{Z(0), 0}, DyadicT<Z>{Z(1), 0}}) {
+      Candidate<Z> c;
       c.root.exact = true;
       c.root.at = end;
       candidates.push_back(std::move(c));
@@ -249,13 +254,13 @@ StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, 
     bool vector_nowhere_zero = false, vector_identically_zero = true;
     const auto& v = contact::branch_vector(P);
     for (const auto* component : {&v.x, &v.y, &v.z}) {
-      const IntegerPoly ip = integer_poly(*component);
+      const IntegerPolyT<Z> ip = integer_poly(*component);
       if (ip.is_zero()) continue;
       vector_identically_zero = false;
       if (add_roots_of(ip) == 0) vector_nowhere_zero = true;
     }
     const auto add = [&](const auto& p) {
-      const IntegerPoly ip = integer_poly(p);
+      const IntegerPolyT<Z> ip = integer_poly(p);
       if (!ip.is_zero()) add_roots_of(ip);
     };
     if (!vector_identically_zero) contact::for_each_proper_poly(P, add);
@@ -282,8 +287,8 @@ StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, 
   const auto dual_set = dual_polys(*PI, P);
 
   std::optional<TimeInterval> best;
-  for (Candidate& c : candidates) {
-    if (contact::in_plane_contact(dual_set, RootSignOracle{c}) != contact::Truth::yes) continue;  // exact
+  for (Candidate<Z>& c : candidates) {
+    if (contact::in_plane_contact(dual_set, RootSignOracle<Z>{c}) != contact::Truth::yes) continue;  // exact
     if (!want_toi) return {Verdict::collision, std::nullopt};
     const TimeInterval t = enclose(c);
     if (!best || earlier(t, *best)) best = t;
@@ -293,19 +298,30 @@ StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, 
   return {Verdict::collision, best};
 }
 
-template <class Query>
+template <class Z, class Query>
 StageResult integer_stage_of(const Query& q, bool want_toi) {
   try {
-    using IntegerQuery = typename kinds::kind_of<Query>::template Query<Integer>;
-    return run_integer_stage(to_integer_query<IntegerQuery>(q), q, want_toi);
-  } catch (const std::runtime_error&) {  // an internal limit: let the CGAL path decide
+    using IntegerQuery = typename kinds::kind_of<Query>::template Query<Z>;
+    return run_integer_stage<Z>(to_integer_query<IntegerQuery>(q), q, want_toi);
+  } catch (const std::runtime_error&) {
+    // GMP: an internal limit, the CGAL path decides. FixedInteger: also an overflow
+    // (std::overflow_error) or a subnormal time (integer_ops.hpp): the GMP stage decides.
     return {};
   }
 }
 
+template <class Query>
+StageResult fixed_integer_stage_of(const Query& q, bool want_toi) {
+  if (exponent_spread(q) > kFixedIntegerSpreadLimit) return {};
+  return integer_stage_of<exact::FixedInteger>(q, want_toi);
+}
+
 }  // namespace
 
-StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) { return integer_stage_of(q, want_toi); }
-StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return integer_stage_of(q, want_toi); }
+StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) { return integer_stage_of<Integer>(q, want_toi); }
+StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return integer_stage_of<Integer>(q, want_toi); }
+
+StageResult fixed_integer_stage(const VertexFaceQuery& q, bool want_toi) { return fixed_integer_stage_of(q, want_toi); }
+StageResult fixed_integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return fixed_integer_stage_of(q, want_toi); }
 
 }  // namespace exactccd::filter

@@ -35,6 +35,12 @@
 //    the candidates are the roots of the two factors (factored_strategy). At a root of C_k the
 //    rule's segment test has a sign known to be zero, which decides contacts exactly on an
 //    edge's line; a contact found there has a certified TOI (narrowed on C_k).
+// 6. Edge-edge, V uncertain and not factored as in 5: when the edge directions da, db agree
+//    exactly in two coordinates up to one sign s (db_j = s da_j as exact polynomials: parallel
+//    grid lines of a folding sheet moving alike), w = Delta (da x e_k) and V = -Delta F with
+//    Delta = db_k - s da_k linear and F = r . (da x e_k) quadratic (parallel_factor_strategy).
+//    The candidates are the roots of Delta and of F; at a root of Delta the edges are parallel
+//    (w = 0, known exactly), which decides the common roots of V and w that item 2 cannot.
 #include "filter/interval_stage.hpp"
 
 #include "filter/interval_strategies.hpp"
@@ -88,8 +94,11 @@ StageResult run_interval_stage(const IntervalQuery& q, const Query& double_query
   // Uncertain, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
   // a root it shares with a factor's): the factored view may decide or narrow on the factor.
   const StageResult factored = interval::factored_strategy(P, q, want_toi);
-  if (factored.verdict == Verdict::uncertain || (toi_missing && !factored.toi)) return moving;
-  return factored;
+  if (factored.verdict != Verdict::uncertain && !(toi_missing && !factored.toi)) return factored;
+  // Edge directions equal (or opposite) in two coordinates: V = -Delta F, w = Delta (da x e_k).
+  const StageResult parallel = interval::parallel_factor_strategy(P, q, want_toi);
+  if (parallel.verdict == Verdict::uncertain || (toi_missing && !parallel.toi)) return moving;
+  return parallel;
 }
 
 template <class Query>

@@ -164,6 +164,140 @@ StageResult factored_strategy(const Polys& P, const IntervalQuery& q, bool want_
   return {};
 }
 
+/// Sign oracle at a root t* of a factor of V that makes several rule polynomials vanish (their
+/// exact values are multiples of the factor): 0 for those, certified interval signs over the
+/// cell (which holds t*) for the others.
+struct FactorRootOracle {
+  Interval t;
+  std::array<const void*, 3> zero_at_candidate;
+  template <int D>
+  int operator()(const contact::Poly<Interval, D>& p) const {
+    for (const void* z : zero_at_candidate)
+      if (static_cast<const void*>(&p) == z) return 0;
+    return IntervalSignOracle{t}(p);
+  }
+};
+
+/// Edge-edge when the edge directions differ in one coordinate only (file comment, item 6):
+/// db_j = s da_j exactly for the two coordinates j != k (s = +1 or -1; parallel grid lines of a
+/// folding sheet). Then db = s da + Delta e_k with Delta = db_k - s da_k, so
+/// w = da x db = Delta (da x e_k), and V = da . (r x db) = -r . w = -Delta F with
+/// F = r . (da x e_k) (r = b0 - a0): V's roots in [0, 1] are those of the linear Delta and of
+/// the quadratic F. At a root of Delta all of w vanishes (the edges are parallel there) and the
+/// oracle knows it, so the rule takes its degenerate branch with certain signs, where the plain
+/// isolation of V could not tell w(t*) = 0 from a tiny nonzero value (a common root of V and w).
+template <class Polys, class IntervalQuery>
+StageResult parallel_factor_strategy(const Polys& P, const IntervalQuery& q, bool want_toi) {
+  if constexpr (contact::is_vertex_face_polys<Polys>::value) {
+    return {};
+  } else {
+    const auto r = rows(q);
+    using Linear = contact::Poly<Interval, 1>;
+    const contact::PolyVec3<Interval, 1> da = contact::relative_motion(r, 0, 1), db = contact::relative_motion(r, 2, 3),
+                                         rv = contact::relative_motion(r, 0, 2);
+    const auto component = [](const contact::PolyVec3<Interval, 1>& v, int j) -> const Linear& {
+      return j == 0 ? v.x : j == 1 ? v.y : v.z;
+    };
+    // (b1 - b0)_j = s (a1 - a0)_j exactly at both ends (then as polynomials in t): the same
+    // input doubles (b0 = a0 and b1 = a1 for s = +1, swapped for s = -1), or differences that
+    // are exact (point intervals) and equal up to s.
+    const auto coordinate = [](const Vec3T<Interval>& v, int j) { return j == 0 ? v.x : j == 1 ? v.y : v.z; };
+    const auto same_at_end = [&](int j, double s, int end) {
+      const int o = 4 * end;
+      const double a0 = coordinate(r[o], j).inf(), a1 = coordinate(r[o + 1], j).inf();
+      const double b0 = coordinate(r[o + 2], j).inf(), b1 = coordinate(r[o + 3], j).inf();
+      if (s > 0 ? (a0 == b0 && a1 == b1) : (a0 == b1 && a1 == b0)) return true;
+      const Interval a = coordinate(r[o + 1], j) - coordinate(r[o], j), b = coordinate(r[o + 3], j) - coordinate(r[o + 2], j);
+      return a.inf() == a.sup() && b.inf() == b.sup() && b.inf() == s * a.inf();
+    };
+    const auto same_component = [&](int j, double s) { return same_at_end(j, s, 0) && same_at_end(j, s, 1); };
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      for (const double s : {1.0, -1.0}) {
+        if (!same_component(i, s) || !same_component(j, s)) continue;
+        const Linear &da_k = component(da, k), &db_k = component(db, k);
+        const Linear delta{{db_k.c[0] - Interval(s) * da_k.c[0], db_k.c[1] - Interval(s) * da_k.c[1]}};
+        // (i, j, k) cyclic: e_i x e_k = -e_j and e_j x e_k = e_i, so da x e_k = da_j e_i - da_i e_j
+        // and F = r . (da x e_k) = r_i da_j - r_j da_i.
+        const contact::Poly<Interval, 2> F = component(rv, i) * component(da, j) - component(rv, j) * component(da, i);
+        if (exactly_zero(delta) || exactly_zero(F)) return {};  // V = 0 for all t: not this case
+        RootCells delta_cells, f_cells;
+        if (isolate_roots(delta, delta_cells) == Isolation::failed || isolate_roots(F, f_cells) == Isolation::failed)
+          return {};
+        struct Candidate {
+          RootCell cell;
+          bool of_delta;
+        };
+        boost::container::small_vector<Candidate, 3> candidates;
+        for (const RootCell& c : delta_cells) candidates.push_back({c, true});
+        for (const RootCell& c : f_cells) candidates.push_back({c, false});
+        // Order the candidates: isolating cells of the two factors may overlap (a linear Delta's
+        // cell is [0, 1]); narrow both by certified bisection of their own factor until they
+        // are disjoint. The same exact point for both (a common root) is one candidate, Delta's
+        // (its oracle knows more). Still overlapping after the budget: leave it to later stages.
+        const auto defining_narrow = [&](Candidate& c) {
+          const RootCell before = c.cell;
+          if (c.of_delta)
+            narrow(delta, c.cell, 1);
+          else
+            narrow(F, c.cell, 1);
+          return c.cell.lo != before.lo || c.cell.hi != before.hi;
+        };
+        for (int round = 0;; ++round) {
+          std::sort(candidates.begin(), candidates.end(),
+                    [](const Candidate& a, const Candidate& b) { return a.cell.lo < b.cell.lo; });
+          std::size_t clash = 0;
+          for (std::size_t n = 1; n < candidates.size() && clash == 0; ++n) {
+            const RootCell &a = candidates[n - 1].cell, &b = candidates[n].cell;
+            if (a.is_point() && b.is_point() && a.lo == b.lo) {
+              candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(candidates[n - 1].of_delta ? n : n - 1));
+              clash = candidates.size() + 1;  // changed: sort and scan again
+            } else if (!(a.hi < b.lo || (a.hi == b.lo && !(a.is_point() && b.is_point())))) {
+              clash = n;
+            }
+          }
+          if (clash == 0) break;
+          if (clash > candidates.size()) continue;
+          if (round == 64) return {};  // unordered
+          const bool left = defining_narrow(candidates[clash - 1]), right = defining_narrow(candidates[clash]);
+          if (!left && !right) return {};
+        }
+        const auto& w = P.direction_cross();
+        for (Candidate& c : candidates) {
+          CellVerdict v = CellVerdict::uncertain;
+          if (c.of_delta) {
+            // At Delta's root w = 0 exactly; retry on a narrower cell while uncertain.
+            for (int attempt = 0; attempt < 3; ++attempt) {
+              const contact::Truth t =
+                  contact::in_plane_contact(P, FactorRootOracle{Interval(c.cell.lo, c.cell.hi), {&w.x, &w.y, &w.z}});
+              if (t != contact::Truth::unknown) {
+                v = t == contact::Truth::yes ? CellVerdict::contact : CellVerdict::no_contact;
+                break;
+              }
+              if (c.cell.is_point()) break;
+              const RootCell before = c.cell;
+              narrow(delta, c.cell, attempt == 0 ? 16 : 1100);
+              if (c.cell.lo == before.lo && c.cell.hi == before.hi) break;
+            }
+          } else {
+            v = in_plane_verdict(P, F, false, c.cell);
+          }
+          if (v == CellVerdict::uncertain) return {};  // the earliest undecided candidate blocks the rest
+          if (v == CellVerdict::no_contact) continue;
+          StageResult result{Verdict::collision, std::nullopt};
+          if (want_toi) {
+            const Narrowing n = c.of_delta ? narrow(delta, c.cell, 1100) : narrow(F, c.cell, 1100);
+            if (n == Narrowing::done) result.toi = TimeInterval{c.cell.lo, c.cell.hi};
+          }
+          return result;
+        }
+        return {Verdict::no_collision, std::nullopt};
+      }
+    }
+    return {};
+  }
+}
+
 /// The in-plane rule with every sign certified over all of [0, 1]: a certain answer holds at
 /// every t there (an exact [0, 0] value means the polynomial vanishes on [0, 1]).
 template <class Polys>

@@ -32,6 +32,19 @@ const VertexFaceQuery kHit{{0.3, 0.2, 1.0},  {0.0, 0.0, 0.0}, {1.0, 0.1, 0.0}, {
 const VertexFaceQuery kThroughVertex{{0.0, 0.0, 1.0},  {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0},
                                      {0.0, 0.0, -2.0}, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}};
 
+// An edge pair of the helical strip (data/sim/sim-strip-edge-edge.csv, query 195) that the
+// interval stage leaves open (a common root of V and w without an exact visible factor): it
+// reaches the integer stage, fixed-width first.
+const exactccd::EdgeEdgeQuery kStripCommonRoot{
+    {-0x1.889e1abf495dfp-3, 0x1.d9ee6dbf18a5dp-2, 0x1.4a0711c49cf91p-2},
+    {-0x1.881e2531b4d89p-3, 0x1.d953f7e1ce1a4p-2, 0x1.6e95c57706f1bp-2},
+    {-0x1.879e2fa420536p-3, 0x1.d8b98204838ebp-2, 0x1.151ac0c52df8ep-2},
+    {-0x1.871e3a168bce0p-3, 0x1.d81f0c2739032p-2, 0x1.3b8b825256049p-2},
+    {-0x1.87d57ad855790p-3, 0x1.d8fc40dc3c22bp-2, 0x1.2ee2ec70ad8d5p-2},
+    {-0x1.87db453a0e36ep-3, 0x1.d9033e40d9ee8p-2, 0x1.50ee8b1b7d975p-2},
+    {-0x1.87e10f9bc6f50p-3, 0x1.d90a3ba577ba5p-2, 0x1.06344b5305ab6p-2},
+    {-0x1.87e6d9fd7fb2ep-3, 0x1.d911390a15863p-2, 0x1.262178b3299a7p-2}};
+
 // Each benchmark copies its query and hides it from the optimiser (DoNotOptimize on the copy),
 // so that no part of the computation is folded at compile time.
 void BM_VolumeExclusion(benchmark::State& state) {
@@ -60,6 +73,29 @@ void BM_IntegerStage(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_IntegerStage);
+
+// The integer stage in fixed-width (1024-bit, no allocation) and in GMP integers, on the query
+// above and on the strip's common root (integer_stage.hpp, fixed_integer_stage).
+template <class Query>
+void BM_FixedIntegerStageOn(benchmark::State& state, const Query& query) {
+  Query q = query;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::filter::fixed_integer_stage(q, false));
+  }
+}
+template <class Query>
+void BM_GmpIntegerStageOn(benchmark::State& state, const Query& query) {
+  Query q = query;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(q);
+    benchmark::DoNotOptimize(exactccd::filter::integer_stage(q, false));
+  }
+}
+BENCHMARK_CAPTURE(BM_FixedIntegerStageOn, through_vertex, kThroughVertex);
+BENCHMARK_CAPTURE(BM_GmpIntegerStageOn, through_vertex, kThroughVertex);
+BENCHMARK_CAPTURE(BM_FixedIntegerStageOn, strip_common_root, kStripCommonRoot);
+BENCHMARK_CAPTURE(BM_GmpIntegerStageOn, strip_common_root, kStripCommonRoot);
 
 // M: exactccd::Method (the public entry point) or exactccd::tools::Method (the baselines,
 // which the installed library does not hold); ccd() is the overload of M's namespace.

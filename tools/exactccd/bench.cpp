@@ -159,7 +159,7 @@ void write_json(std::ostream& out, const std::vector<Result>& results) {
         << ", \"exact_fallbacks\": " << r.exact_fallbacks << ", \"stages\": {\"volume_exclusion\": "
         << r.stages.volume_exclusion << ", \"static_predicates\": " << r.stages.static_predicates
         << ", \"separating_direction\": " << r.stages.separating_direction << ", \"interval\": " << r.stages.interval
-        << ", \"integer\": " << r.stages.integer << ", \"exact\": " << r.stages.exact << "}}"
+        << ", \"fixed_integer\": " << r.stages.fixed_integer << ", \"integer\": " << r.stages.integer << ", \"exact\": " << r.stages.exact << "}}"
         << (i + 1 < results.size() ? "," : "") << "\n";
   }
   out << "]\n";
@@ -203,7 +203,7 @@ int run_bench(int argc, char** argv) {
                       "disagrees with Method::exact\n");
   std::fprintf(table, "%-34s %4s %-9s %9s %8s %10s %10s %6s %6s %12s %9s %8s  %s\n", "dataset", "kind", "method",
                relative ? "d/box" : "d", "queries", "mean_ns", "median_ns", "FP", "FN", "truth!=exact", "exact_fb",
-               "gmp_cgal", "stages (vol/static/sep/int/integer/exact)");
+               "gmp_cgal", "stages (vol/static/sep/int/fixed/gmp/exact)");
   std::vector<Result> results;
   for (const Dataset& d : datasets) {
     const std::size_t n = d.queries.size();
@@ -270,10 +270,11 @@ int run_bench(int argc, char** argv) {
         std::string gmp_cgal = "-";
         if (methods[m] == tools::Method::filtered && n) {
           char buf[160];
-          std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.1f%% / %.1f%% / %.2f%% / %.3f%%",
+          std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.1f%% / %.1f%% / %.2f%% / %.2f%% / %.3f%%",
                         100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.static_predicates / n,
                         100.0 * r.stages.separating_direction / n, 100.0 * r.stages.interval / n,
-                        100.0 * r.stages.integer / n, 100.0 * r.stages.exact / n);
+                        100.0 * r.stages.fixed_integer / n, 100.0 * r.stages.integer / n,
+                        100.0 * r.stages.exact / n);
           stages = buf;
           gmp_cgal = std::to_string(r.stages.integer + r.stages.exact);
         }
