@@ -65,19 +65,19 @@ exactccd_status exactccd_ccd(int kind, const double* query, double min_distance,
 exactccd_status exactccd_toi(int kind, const double* query, double min_distance, double tmax, int* collides,
                              double* lo, double* hi);
 
-/* Candidate pairs from the caller's own broad phase (exactccd/candidates.hpp): row-major arrays
+/** Candidate pairs from the caller's own broad phase (exactccd/candidates.hpp): row-major arrays
  * of vertex indices into the positions, `*_count` rows each; a list may be NULL when its count
  * is 0. A candidate whose two sides share a vertex index, or whose triangle or edge repeats one,
  * is refused (EXACTCCD_ERROR_INDEX): it touches at t = 0 by construction. */
 typedef struct exactccd_candidates {
-  const int* vertex_face;   /* rows {vertex, a, b, c}: a vertex and the triangle (a, b, c) */
-  size_t vertex_face_count; /* rows of vertex_face */
-  const int* edge_edge;     /* rows {a0, a1, b0, b1}: the edges (a0, a1) and (b0, b1) */
-  size_t edge_edge_count;   /* rows of edge_edge */
-  const int* point_edge;    /* rows {p, a, b}: a point and the edge (a, b) */
-  size_t point_edge_count;  /* rows of point_edge */
-  const int* point_point;   /* rows {p, q}: two points */
-  size_t point_point_count; /* rows of point_point */
+  const int* vertex_face;    /**< rows {vertex, a, b, c}: a vertex and the triangle (a, b, c) */
+  size_t vertex_face_count;  /**< rows of vertex_face */
+  const int* edge_edge;      /**< rows {a0, a1, b0, b1}: the edges (a0, a1) and (b0, b1) */
+  size_t edge_edge_count;    /**< rows of edge_edge */
+  const int* point_edge;     /**< rows {p, a, b}: a point and the edge (a, b) */
+  size_t point_edge_count;   /**< rows of point_edge */
+  const int* point_point;    /**< rows {p, q}: two points */
+  size_t point_point_count;  /**< rows of point_point */
 } exactccd_candidates;
 
 /* The batch narrow phase over candidates. Common arguments: positions_t0 and positions_t1, 3 *
