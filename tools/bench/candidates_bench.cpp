@@ -82,13 +82,14 @@ void BM_CandidatesFindCollisions(benchmark::State& state) {
   label(state, f);
 }
 
-/// The narrow phase alone: every candidate's TOI by the primitive functions, in a plain loop.
+/// The narrow phase alone: every candidate's TOI by the primitive functions, in a plain loop
+/// over queries built beforehand, with the CcdParams overloads the batch functions call.
 void BM_PrimitiveToiLoop(benchmark::State& state) {
   const Fixture& f = fixture(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     std::size_t hits = 0;
-    for (const auto& q : f.vf) hits += vertex_face_toi(q).has_value();
-    for (const auto& q : f.ee) hits += edge_edge_toi(q).has_value();
+    for (const auto& q : f.vf) hits += vertex_face_toi(q, CcdParams{}).has_value();
+    for (const auto& q : f.ee) hits += edge_edge_toi(q, CcdParams{}).has_value();
     benchmark::DoNotOptimize(hits);
   }
   label(state, f);
