@@ -44,26 +44,26 @@ PairSides sides_of(CollisionKind kind, const std::array<int, N>& row, int first)
 /// The size of side 0 of each kind's rows.
 constexpr std::array<int, 4> kFirstSide{1, 2, 1, 1};
 
-/// Checks list `list` (kKinds order) of N-index rows against n vertices.
+/// Checks list `list` (kKinds order) of N-index rows against n vertices (messages built only on
+/// failure: this runs on every call).
 template <std::size_t N>
 void require_valid_rows(const std::vector<std::array<int, N>>& rows, std::size_t list, std::size_t n) {
-  const std::string name = kListNames[list];
+  const auto which = [&](std::size_t i) { return std::string(kListNames[list]) + " candidate " + std::to_string(i); };
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    const PairSides r = sides_of(kKinds[list], rows[i], kFirstSide[list]);
-    const std::string which = name + " candidate " + std::to_string(i);
     for (int v : rows[i])
       if (v < 0 || static_cast<std::size_t>(v) >= n)
-        fail(which + " has vertex index " + std::to_string(v) + ", out of range [0, " + std::to_string(n) + ")");
+        fail(which(i) + " has vertex index " + std::to_string(v) + ", out of range [0, " + std::to_string(n) + ")");
+    const PairSides r = sides_of(kKinds[list], rows[i], kFirstSide[list]);
     for (int s = 0; s < 2; ++s)
       for (int a = 0; a < r.side[s].n; ++a)
         for (int b = 0; b < a; ++b)
           if (r.side[s].v[a] == r.side[s].v[b])
-            fail(which + ": its " + (r.side[s].n == 3 ? "triangle" : "edge") + " repeats vertex index " +
+            fail(which(i) + ": its " + (r.side[s].n == 3 ? "triangle" : "edge") + " repeats vertex index " +
                  std::to_string(r.side[s].v[a]) + " (a degenerate element)");
     for (int a = 0; a < r.side[0].n; ++a)
       for (int b = 0; b < r.side[1].n; ++b)
         if (r.side[0].v[a] == r.side[1].v[b])
-          fail(which + ": its two sides share vertex index " + std::to_string(r.side[0].v[a]) +
+          fail(which(i) + ": its two sides share vertex index " + std::to_string(r.side[0].v[a]) +
                " (such a pair is within distance 0 at t = 0 by construction; exclude it from the candidates)");
   }
 }
