@@ -7,9 +7,11 @@
 //
 // Every candidate is decided exactly, as the primitive queries of ccd.hpp decide it with
 // CcdParams{min_distance, tmax}, by the same narrow phase as the scene functions of scene.hpp
-// (same threads, same early exit and time pruning in earliest_toi): given the candidates of the
-// scene's own broad phase, the answers are those of find_collisions / earliest_toi /
-// max_collision_free_step of the Scene. Every kind is tested for every d >= 0, including
+// (same threads, same early exit and time pruning in earliest_toi): given the candidates the
+// scene's own broad phase forms for the same min_distance and tmax, the answers are those of
+// find_collisions / earliest_toi / max_collision_free_step of the Scene. A broad phase must keep
+// every pair that can come within min_distance during [0, tmax] (e.g. boxes grown by d): the
+// batch functions answer for the candidates given, and a pair left out is not seen. Every kind is tested for every d >= 0, including
 // point-edge and point-point at d = 0 (in 3D a point meeting a segment or another point), since
 // the caller asked for them.
 //
