@@ -54,6 +54,28 @@ inline Scene random_scene(std::mt19937_64& rng, int n, int triangles, int edges,
   return s;
 }
 
+/// A random 3D scene (scene_support's, with triangles and extra edges) plus isolated points:
+/// `extra` new vertices listed as points, and a listed point on an edge.
+inline Scene scene_with_points(std::mt19937_64& rng, int n, int triangles, int edges, int extra, bool degenerate) {
+  Scene s = random_scene(rng, n, triangles, edges, 1, degenerate);
+  std::uniform_int_distribution<int> grid(-2, 2), pick(0, n - 1);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (int i = 0; i < extra; ++i) {
+    const int v = static_cast<int>(s.positions_t0.size());
+    if (degenerate) {
+      s.positions_t0.push_back({grid(rng) * 0.25, grid(rng) * 0.25, grid(rng) * 0.25});
+      s.positions_t1.push_back(i == 0 ? s.positions_t0.back() : Vec3{grid(rng) * 0.25, grid(rng) * 0.25, 0.0});
+    } else {
+      s.positions_t0.push_back({uniform(rng), uniform(rng), uniform(rng)});
+      s.positions_t1.push_back({uniform(rng), uniform(rng), uniform(rng)});
+    }
+    s.points.push_back(v);
+  }
+  if (!s.triangles.empty()) s.points.push_back(s.triangles[0][1]);  // on an edge: not isolated
+  if (extra > 0) s.points.push_back(s.points[1]);                   // a repeat is harmless
+  return s;
+}
+
 /// The scene's VF vertices (referenced by anything) and EE edges, as scene.hpp defines them.
 inline std::vector<int> scene_vertices(const Scene& s) {
   std::set<int> v(s.points.begin(), s.points.end());

@@ -6,10 +6,10 @@
 // re-answers every query of the shared sample and of the bundled data through every entry point
 // (C++ with and without counters, both exact methods and the tools library's naive baseline,
 // rational queries, the C API, the Eigen overloads) and every scene function on the bundled
-// scenes. After every call the control state (MXCSR control bits, x87 control word,
-// fegetround) must be the one the test installed. A fault-injection test throws std::bad_alloc
-// from every allocation a query makes in turn, and checks the caller's environment after each
-// throw.
+// scenes (and the batch functions over their broad-phase candidates). After every call the
+// control state (MXCSR control bits, x87 control word, fegetround) must be the one the test
+// installed. A fault-injection test throws std::bad_alloc from every allocation a query makes
+// in turn, and checks the caller's environment after each throw.
 #include <gtest/gtest.h>
 
 #include <cfenv>
@@ -33,6 +33,7 @@
 #include "tools/methods.hpp"
 #include "fuzz/families.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "scene/scene_primitives.hpp"
 
 #if defined(__x86_64__) || defined(_M_X64)
 #include <xmmintrin.h>
@@ -468,6 +469,11 @@ struct SceneAnswers {
   bool collision_free = false;
   double step = -1;
   bool free0 = false, free1 = false;
+  // The batch functions over the scene's own broad-phase candidates (exactccd/candidates.hpp).
+  std::vector<CandidateCollision> batch;
+  std::optional<TimeInterval> batch_earliest;
+  bool batch_free = false;
+  double batch_step = -1;
 };
 
 bool operator==(const SceneAnswers& a, const SceneAnswers& b) {
@@ -479,7 +485,26 @@ bool operator==(const SceneAnswers& a, const SceneAnswers& b) {
       return false;
   }
   return a.earliest.has_value() == b.earliest.has_value() && (!a.earliest || *a.earliest == *b.earliest) &&
-         a.collision_free == b.collision_free && a.step == b.step && a.free0 == b.free0 && a.free1 == b.free1;
+         a.collision_free == b.collision_free && a.step == b.step && a.free0 == b.free0 && a.free1 == b.free1 &&
+         a.batch.size() == b.batch.size() &&
+         std::equal(a.batch.begin(), a.batch.end(), b.batch.begin(),
+                    [](const CandidateCollision& x, const CandidateCollision& y) {
+                      return x.kind == y.kind && x.index == y.index && x.toi == y.toi;
+                    }) &&
+         a.batch_earliest.has_value() == b.batch_earliest.has_value() &&
+         (!a.batch_earliest || *a.batch_earliest == *b.batch_earliest) && a.batch_free == b.batch_free &&
+         a.batch_step == b.batch_step;
+}
+
+/// The scene's own broad-phase candidates (d = 0, tmax = 1) as a CandidateSet of vertex indices.
+CandidateSet scene_candidate_set(const Scene& s) {
+  const scene::ScenePrimitives prim = scene::scene_primitives(s);
+  CandidateSet c;
+  for (const auto& [v, t] : prim.candidates.vertex_face)
+    c.vertex_face.push_back({v, s.triangles[t][0], s.triangles[t][1], s.triangles[t][2]});
+  for (const auto& [i, j] : prim.candidates.edge_edge)
+    c.edge_edge.push_back({prim.edges[i][0], prim.edges[i][1], prim.edges[j][0], prim.edges[j][1]});
+  return c;
 }
 
 SceneAnswers scene_answers(const Scene& s, const ControlState& expected) {
@@ -496,6 +521,18 @@ SceneAnswers scene_answers(const Scene& s, const ControlState& expected) {
   EXPECT_TRUE(control_state() == expected) << "max_collision_free_step";
   EXPECT_EQ(a.step, max_collision_free_step(earliest_toi(a.collisions)));
   EXPECT_TRUE(control_state() == expected) << "earliest_toi(collisions), max_collision_free_step(toi)";
+  const CandidateSet c = scene_candidate_set(s);
+  a.batch = find_collisions(s.positions_t0, s.positions_t1, c, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "find_collisions(candidates)";
+  EXPECT_EQ(a.batch.size(), a.collisions.size());
+  a.batch_earliest = earliest_toi(s.positions_t0, s.positions_t1, c, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "earliest_toi(candidates)";
+  EXPECT_TRUE(a.batch_earliest.has_value() == a.earliest.has_value() && (!a.earliest || *a.batch_earliest == *a.earliest));
+  a.batch_free = is_collision_free(s.positions_t0, s.positions_t1, c, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "is_collision_free(candidates)";
+  a.batch_step = max_collision_free_step(s.positions_t0, s.positions_t1, c, two_threads);
+  EXPECT_TRUE(control_state() == expected) << "max_collision_free_step(candidates)";
+  EXPECT_EQ(a.batch_step, a.step);
   a.free0 = intersection_free(s.positions_t0, s.triangles);
   a.free1 = intersection_free(s.positions_t1, s.triangles);
   EXPECT_TRUE(control_state() == expected) << "intersection_free";

@@ -21,6 +21,7 @@ namespace exactccd {
 namespace {
 
 using testing::random_scene;
+using testing::scene_with_points;
 using testing::same;
 
 std::string describe(const Collision& c) {
@@ -202,28 +203,6 @@ void check(std::array<std::size_t, 4>& kinds, const SceneT& s, double d, double 
     EXPECT_TRUE(brute_force(s, CcdParams{d, step}).empty()) << what << " step " << step;
   }
   for (const Collision& c : want) ++kinds[static_cast<int>(c.kind)];
-}
-
-/// A random 3D scene (scene_support's, with triangles and extra edges) plus isolated points:
-/// `extra` new vertices listed as points, and a listed point on an edge.
-Scene scene_with_points(std::mt19937_64& rng, int n, int triangles, int edges, int extra, bool degenerate) {
-  Scene s = random_scene(rng, n, triangles, edges, 1, degenerate);
-  std::uniform_int_distribution<int> grid(-2, 2), pick(0, n - 1);
-  std::uniform_real_distribution<double> uniform(-1, 1);
-  for (int i = 0; i < extra; ++i) {
-    const int v = static_cast<int>(s.positions_t0.size());
-    if (degenerate) {
-      s.positions_t0.push_back({grid(rng) * 0.25, grid(rng) * 0.25, grid(rng) * 0.25});
-      s.positions_t1.push_back(i == 0 ? s.positions_t0.back() : Vec3{grid(rng) * 0.25, grid(rng) * 0.25, 0.0});
-    } else {
-      s.positions_t0.push_back({uniform(rng), uniform(rng), uniform(rng)});
-      s.positions_t1.push_back({uniform(rng), uniform(rng), uniform(rng)});
-    }
-    s.points.push_back(v);
-  }
-  if (!s.triangles.empty()) s.points.push_back(s.triangles[0][1]);  // on an edge: not isolated
-  if (extra > 0) s.points.push_back(s.points[1]);                   // a repeat is harmless
-  return s;
 }
 
 /// A random 2D scene: n vertices (uniform in [-1, 1]^2, or degenerate: a grid of step 1/4,

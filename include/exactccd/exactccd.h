@@ -8,6 +8,8 @@
 #ifndef EXACTCCD_EXACTCCD_H
 #define EXACTCCD_EXACTCCD_H
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -17,7 +19,9 @@ typedef enum exactccd_status {
   EXACTCCD_ERROR_NON_FINITE = 1, /* a coordinate is NaN or infinite */
   EXACTCCD_ERROR_NULL = 2,       /* a required pointer is NULL */
   EXACTCCD_ERROR_INTERNAL = 3,   /* unexpected failure (e.g. out of memory) */
-  EXACTCCD_ERROR_PARAMETER = 4   /* unknown kind, min_distance < 0 or not finite, tmax not in (0, 1] */
+  EXACTCCD_ERROR_PARAMETER = 4,  /* unknown kind, min_distance < 0 or not finite, tmax not in (0, 1] */
+  EXACTCCD_ERROR_INDEX = 5,      /* a candidate's vertex index is out of range or repeated */
+  EXACTCCD_ERROR_CAPACITY = 6    /* the output arrays are too small (*count holds the size needed) */
 } exactccd_status;
 
 /* The primitive kinds (the values of the CLI's --kind in this order: vf ee pe pp ee2 pe2 pp2). */
@@ -60,6 +64,64 @@ exactccd_status exactccd_ccd(int kind, const double* query, double min_distance,
  * double interval; [0, 0] when the initial distance is <= min_distance). */
 exactccd_status exactccd_toi(int kind, const double* query, double min_distance, double tmax, int* collides,
                              double* lo, double* hi);
+
+/** Candidate pairs from the caller's own broad phase (exactccd/candidates.hpp): row-major arrays
+ * of vertex indices into the positions, `*_count` rows each; a list may be NULL when its count
+ * is 0. A candidate whose two sides share a vertex index, or whose triangle or edge repeats one,
+ * is refused (EXACTCCD_ERROR_INDEX): it touches at t = 0 by construction. */
+typedef struct exactccd_candidates {
+  const int* vertex_face;    /**< rows {vertex, a, b, c}: a vertex and the triangle (a, b, c) */
+  size_t vertex_face_count;  /**< rows of vertex_face */
+  const int* edge_edge;      /**< rows {a0, a1, b0, b1}: the edges (a0, a1) and (b0, b1) */
+  size_t edge_edge_count;    /**< rows of edge_edge */
+  const int* point_edge;     /**< rows {p, a, b}: a point and the edge (a, b) */
+  size_t point_edge_count;   /**< rows of point_edge */
+  const int* point_point;    /**< rows {p, q}: two points */
+  size_t point_point_count;  /**< rows of point_point */
+} exactccd_candidates;
+
+/* The batch narrow phase over candidates. Common arguments: positions_t0 and positions_t1, 3 *
+ * vertex_count doubles (x y z per vertex, at t = 0 and t = 1; NULL allowed when vertex_count is
+ * 0); the candidates; min_distance (>= 0) and tmax (in (0, 1]) as for exactccd_ccd; threads
+ * (0: every hardware thread; the answers do not depend on it). Statuses: EXACTCCD_ERROR_NULL,
+ * EXACTCCD_ERROR_PARAMETER (also for more than INT_MAX vertices), EXACTCCD_ERROR_NON_FINITE,
+ * EXACTCCD_ERROR_INDEX, EXACTCCD_ERROR_INTERNAL; outputs are written only on EXACTCCD_OK. */
+
+/* The earliest time of impact over the candidates: *collides = 1 and [*lo, *hi] the tightest
+ * double interval holding the earliest t in [0, tmax] at which some candidate is within
+ * min_distance (lo and hi may be NULL), else *collides = 0. Prunes and stops early as
+ * exactccd::earliest_toi. */
+exactccd_status exactccd_candidates_earliest_toi(const double* positions_t0, const double* positions_t1,
+                                                 size_t vertex_count, const exactccd_candidates* candidates,
+                                                 double min_distance, double tmax, unsigned threads, int* collides,
+                                                 double* lo, double* hi);
+
+/* The largest collision-free step: *step = tmax when no candidate collides in [0, tmax], else the
+ * largest double strictly below the earliest time of impact's lo (0 for a collision at t = 0). */
+exactccd_status exactccd_candidates_max_collision_free_step(const double* positions_t0, const double* positions_t1,
+                                                            size_t vertex_count,
+                                                            const exactccd_candidates* candidates,
+                                                            double min_distance, double tmax, unsigned threads,
+                                                            double* step);
+
+/* *collision_free = 1 when no candidate collides in [0, tmax], else 0; stops at the first
+ * collision found. */
+exactccd_status exactccd_candidates_is_collision_free(const double* positions_t0, const double* positions_t1,
+                                                      size_t vertex_count, const exactccd_candidates* candidates,
+                                                      double min_distance, double tmax, unsigned threads,
+                                                      int* collision_free);
+
+/* Every colliding candidate: *count of them, sorted by kind (vertex-face, edge-edge, point-edge,
+ * point-point: the values 0 to 3 of exactccd_kind) then by row; for the i-th, kinds[i] its kind,
+ * rows[i] its row in that kind's list, [lo[i], hi[i]] its time of impact (the tightest double
+ * interval). The four arrays hold `capacity` entries (they may be NULL when capacity is 0); when
+ * more candidates collide, the status is EXACTCCD_ERROR_CAPACITY and only *count is written (the
+ * capacity needed). The total number of candidates is always enough. */
+exactccd_status exactccd_candidates_find_collisions(const double* positions_t0, const double* positions_t1,
+                                                    size_t vertex_count, const exactccd_candidates* candidates,
+                                                    double min_distance, double tmax, unsigned threads,
+                                                    size_t capacity, size_t* count, int* kinds, size_t* rows,
+                                                    double* lo, double* hi);
 
 /* A static description of a status, e.g. for error messages. */
 const char* exactccd_status_string(exactccd_status status);

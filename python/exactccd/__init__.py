@@ -19,6 +19,16 @@ Scenes on arrays (V0, V1 of shape (n, 3), or (n, 2) for a 2D scene; F, E, P inde
     intersection_free(V, F) -> bool
     read_mesh(path) -> (V, F)
 
+The narrow phase over the caller's own candidate pairs (e.g. a simulator's broad phase; V0, V1
+of shape (n, 3); candidate rows of vertex indices, or of face / edge indices with F / E)::
+
+    candidates_find_collisions(V0, V1, vertex_face=None, edge_edge=None, point_edge=None,
+                               point_point=None, F=None, E=None, min_distance=0.0, tmax=1.0,
+                               threads=0) -> dict (kind, index, toi)
+    candidates_earliest_toi(...) -> (lo, hi) or None
+    candidates_is_collision_free(...) -> bool
+    candidates_max_collision_free_step(...) -> float
+
 Every answer is exact; a time of impact is the tightest double interval [lo, hi] holding the exact
 time. Bad input (shape, dtype, NaN or infinite coordinates, bad min_distance or tmax) raises
 ValueError with the library's message.
@@ -30,6 +40,10 @@ from ._exactccd import (  # noqa: F401
     POINT_EDGE,
     POINT_POINT,
     VERTEX_FACE,
+    candidates_earliest_toi,
+    candidates_find_collisions,
+    candidates_is_collision_free,
+    candidates_max_collision_free_step,
     earliest_toi,
     edge_edge_2d_ccd,
     edge_edge_2d_toi,
@@ -67,6 +81,7 @@ KINDS = {
 
 __all__ = [
     "EDGE_EDGE", "KIND_NAMES", "KINDS", "POINT_EDGE", "POINT_POINT", "VERTEX_FACE",
-    "earliest_toi", "find_collisions", "intersection_free", "is_collision_free",
+    "candidates_earliest_toi", "candidates_find_collisions", "candidates_is_collision_free",
+    "candidates_max_collision_free_step", "earliest_toi", "find_collisions", "intersection_free", "is_collision_free",
     "max_collision_free_step", "read_mesh",
 ] + [f"{k}_{f}" for k in KINDS for f in ("ccd", "toi")]

@@ -71,5 +71,57 @@ def max_collision_free_step(
     tmax: float = 1.0,
     threads: int = 0,
 ) -> float: ...
+def candidates_find_collisions(
+    V0: _Coords,
+    V1: _Coords,
+    vertex_face: _Indices = None,
+    edge_edge: _Indices = None,
+    point_edge: _Indices = None,
+    point_point: _Indices = None,
+    F: _Indices = None,
+    E: _Indices = None,
+    min_distance: float = 0.0,
+    tmax: float = 1.0,
+    threads: int = 0,
+) -> Dict[str, np.ndarray]: ...
+def candidates_earliest_toi(
+    V0: _Coords,
+    V1: _Coords,
+    vertex_face: _Indices = None,
+    edge_edge: _Indices = None,
+    point_edge: _Indices = None,
+    point_point: _Indices = None,
+    F: _Indices = None,
+    E: _Indices = None,
+    min_distance: float = 0.0,
+    tmax: float = 1.0,
+    threads: int = 0,
+) -> Optional[Tuple[float, float]]: ...
+def candidates_is_collision_free(
+    V0: _Coords,
+    V1: _Coords,
+    vertex_face: _Indices = None,
+    edge_edge: _Indices = None,
+    point_edge: _Indices = None,
+    point_point: _Indices = None,
+    F: _Indices = None,
+    E: _Indices = None,
+    min_distance: float = 0.0,
+    tmax: float = 1.0,
+    threads: int = 0,
+) -> bool: ...
+def candidates_max_collision_free_step(
+    V0: _Coords,
+    V1: _Coords,
+    vertex_face: _Indices = None,
+    edge_edge: _Indices = None,
+    point_edge: _Indices = None,
+    point_point: _Indices = None,
+    F: _Indices = None,
+    E: _Indices = None,
+    min_distance: float = 0.0,
+    tmax: float = 1.0,
+    threads: int = 0,
+) -> float: ...
 def intersection_free(V: _Coords, F: npt.ArrayLike) -> bool: ...
 def read_mesh(path: Union[str, os.PathLike]) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...

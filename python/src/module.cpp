@@ -1,7 +1,8 @@
 // The Python module exactccd._exactccd (python/exactccd/__init__.py re-exports it): NumPy batch
 // functions over every primitive kind (one template over lib/kinds, never a copy per kind), the
 // scene functions on arrays, and the mesh reader. The GIL is released while the library works;
-// batches are spread over threads with the scene narrow phase's pool (lib/scene/parallel.hpp).
+// batches are spread over threads with the scene narrow phase's pool (lib/scene/parallel.hpp);
+// the batch narrow phase over the caller's own candidates (exactccd/candidates.hpp).
 //
 // Errors: the library's std::invalid_argument becomes ValueError (pybind11's own translation),
 // with the message unchanged; the bindings' checks of shapes and dtypes raise ValueError too;
@@ -22,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "exactccd/candidates.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"
 #include "exactccd/types.hpp"
@@ -426,6 +428,132 @@ py::tuple read_mesh_py(const py::handle& path_obj) {
   return py::make_tuple(v, f);
 }
 
+// --- the caller's own candidates (exactccd/candidates.hpp) ------------------------------------
+
+/// Positions and candidates from arrays.
+struct CandidateInput {
+  std::vector<Vec3> x0, x1;
+  CandidateSet set;
+};
+
+std::vector<Vec3> to_positions(const DoubleArray& a) {
+  std::vector<Vec3> p(static_cast<std::size_t>(a.shape(0)));
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = Vec3{a.data()[3 * i], a.data()[3 * i + 1], a.data()[3 * i + 2]};
+  return p;
+}
+
+CandidateInput make_candidates(const py::handle& v0_obj, const py::handle& v1_obj, const py::handle& vf_obj,
+                               const py::handle& ee_obj, const py::handle& pe_obj, const py::handle& pp_obj,
+                               const py::handle& f_obj, const py::handle& e_obj) {
+  const DoubleArray v0 = float_array(v0_obj, "V0", {-1, 3}, "(n, 3)");
+  const DoubleArray v1 = float_array(v1_obj, "V1", {-1, 3}, "(n, 3)");
+  if (v0.shape(0) != v1.shape(0))
+    throw py::value_error("V0 and V1 must have the same shape, not " + shape_string(v0) + " and " + shape_string(v1));
+  CandidateInput in{to_positions(v0), to_positions(v1), {}};
+  const bool by_face = !f_obj.is_none(), by_edge = !e_obj.is_none();
+  using Pairs = std::vector<std::array<int, 2>>;
+  if (by_face) {
+    const auto faces = to_tuples<3>(index_array(f_obj, "F", 3), "F");
+    const auto vf = to_tuples<2>(index_array(vf_obj, "vertex_face (with F: rows {vertex, face})", 2), "vertex_face");
+    in.set.vertex_face = candidates_from_elements(faces, {}, vf, {}).vertex_face;
+  } else {
+    in.set.vertex_face = to_tuples<4>(index_array(vf_obj, "vertex_face", 4), "vertex_face");
+  }
+  if (by_edge) {
+    const auto edges = to_tuples<2>(index_array(e_obj, "E", 2), "E");
+    const Pairs ee = to_tuples<2>(index_array(ee_obj, "edge_edge (with E: rows {edge, edge})", 2), "edge_edge");
+    const Pairs pe = to_tuples<2>(index_array(pe_obj, "point_edge (with E: rows {vertex, edge})", 2), "point_edge");
+    CandidateSet expanded = candidates_from_elements({}, edges, {}, ee, pe);
+    in.set.edge_edge = std::move(expanded.edge_edge);
+    in.set.point_edge = std::move(expanded.point_edge);
+  } else {
+    in.set.edge_edge = to_tuples<4>(index_array(ee_obj, "edge_edge", 4), "edge_edge");
+    in.set.point_edge = to_tuples<3>(index_array(pe_obj, "point_edge", 3), "point_edge");
+  }
+  in.set.point_point = to_tuples<2>(index_array(pp_obj, "point_point", 2), "point_point");
+  return in;
+}
+
+py::dict candidates_find_collisions_py(const py::handle& v0, const py::handle& v1, const py::handle& vf,
+                                       const py::handle& ee, const py::handle& pe, const py::handle& pp,
+                                       const py::handle& f, const py::handle& e, double min_distance, double tmax,
+                                       long long threads) {
+  const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  std::vector<CandidateCollision> cs;
+  {
+    py::gil_scoped_release release;
+    cs = find_collisions(in.x0, in.x1, in.set, o);
+  }
+  const auto k = static_cast<py::ssize_t>(cs.size());
+  py::array_t<std::int8_t> kind(k);
+  IndexArray index(k);
+  auto toi = shaped<py::array_t<double>>({k, 2});
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    kind.mutable_data()[i] = static_cast<std::int8_t>(cs[i].kind);
+    index.mutable_data()[i] = static_cast<std::int64_t>(cs[i].index);
+    toi.mutable_data()[2 * i] = cs[i].toi.lo;
+    toi.mutable_data()[2 * i + 1] = cs[i].toi.hi;
+  }
+  py::dict d;
+  d["kind"] = kind;
+  d["index"] = index;
+  d["toi"] = toi;
+  return d;
+}
+
+std::optional<std::pair<double, double>> candidates_earliest_toi_py(
+    const py::handle& v0, const py::handle& v1, const py::handle& vf, const py::handle& ee, const py::handle& pe,
+    const py::handle& pp, const py::handle& f, const py::handle& e, double min_distance, double tmax,
+    long long threads) {
+  const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  std::optional<TimeInterval> t;
+  {
+    py::gil_scoped_release release;
+    t = earliest_toi(in.x0, in.x1, in.set, o);
+  }
+  if (!t) return std::nullopt;
+  return std::make_pair(t->lo, t->hi);
+}
+
+bool candidates_is_collision_free_py(const py::handle& v0, const py::handle& v1, const py::handle& vf,
+                                     const py::handle& ee, const py::handle& pe, const py::handle& pp,
+                                     const py::handle& f, const py::handle& e, double min_distance, double tmax,
+                                     long long threads) {
+  const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  py::gil_scoped_release release;
+  return is_collision_free(in.x0, in.x1, in.set, o);
+}
+
+double candidates_max_collision_free_step_py(const py::handle& v0, const py::handle& v1, const py::handle& vf,
+                                             const py::handle& ee, const py::handle& pe, const py::handle& pp,
+                                             const py::handle& f, const py::handle& e, double min_distance,
+                                             double tmax, long long threads) {
+  const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
+  const SceneOptions o = make_options(min_distance, tmax, threads);
+  py::gil_scoped_release release;
+  return max_collision_free_step(in.x0, in.x1, in.set, o);
+}
+
+constexpr const char* kCandidateArgs =
+    "V0, V1: float64 arrays of shape (n, 3), the vertex positions at t = 0 and t = 1.\n"
+    "vertex_face: integer array (m, 4) of rows {vertex, a, b, c} (a vertex and a triangle), or, with F, "
+    "(m, 2) of rows {vertex, face}.\n"
+    "edge_edge: integer array (m, 4) of rows {a0, a1, b0, b1}, or, with E, (m, 2) of rows {edge, edge}.\n"
+    "point_edge: integer array (m, 3) of rows {p, a, b}, or, with E, (m, 2) of rows {vertex, edge}.\n"
+    "point_point: integer array (m, 2) of rows {p, q}.\n"
+    "F: integer array (f, 3) of faces, or None; E: integer array (e, 2) of edges, or None.\n"
+    "Every list may be None (empty); each is taken in the caller's order. Every kind is tested for "
+    "every min_distance, including 0.\n"
+    "min_distance: d, finite and >= 0 (0: contact).\ntmax: the time limit, in (0, 1].\n"
+    "threads: worker threads (0: every hardware thread); the result does not depend on it.\n"
+    "The GIL is released during the work. Raises ValueError (the library's message, naming the "
+    "element) for a wrong shape or dtype, a NaN or infinite coordinate, an index out of range, a "
+    "candidate whose two sides share a vertex index (it touches at t = 0 by construction) or whose "
+    "triangle or edge repeats one, or bad options.";
+
 constexpr const char* kSceneArgs =
     "V0, V1: float64 arrays of shape (n, 3) (or (n, 2) for a 2D scene), the vertex positions at t = 0 "
     "and t = 1.\nF: integer array (m, 3) of triangles (0-based; None or empty in 2D).\nE: integer array "
@@ -494,6 +622,30 @@ PYBIND11_MODULE(_exactccd, m) {
              "collides, else the largest double strictly below the earliest TOI's lo (0 for a collision at "
              "t = 0).\n\n" +
              args));
+  const std::string cargs = kCandidateArgs;
+  const auto candidate_function = [&](const char* name, auto f, const std::string& doc) {
+    m.def(name, f, py::arg("V0"), py::arg("V1"), py::arg("vertex_face") = py::none(),
+          py::arg("edge_edge") = py::none(), py::arg("point_edge") = py::none(), py::arg("point_point") = py::none(),
+          py::arg("F") = py::none(), py::arg("E") = py::none(), py::arg("min_distance") = 0.0, py::arg("tmax") = 1.0,
+          py::arg("threads") = 0, keep(doc + "\n\n" + cargs));
+  };
+  candidate_function("candidates_find_collisions", &candidates_find_collisions_py,
+                     "Every colliding candidate of the caller's own candidate lists (e.g. from a simulator's broad "
+                     "phase) and its time of impact, as a dict of arrays, sorted by kind then by row:\n"
+                     "  kind: int8 (k,), VERTEX_FACE=0, EDGE_EDGE=1, POINT_EDGE=2, POINT_POINT=3 (which list);\n"
+                     "  index: int64 (k,), the row in that list;\n"
+                     "  toi: float64 (k, 2), [lo, hi], the tightest double interval holding the exact time of "
+                     "impact.");
+  candidate_function("candidates_earliest_toi", &candidates_earliest_toi_py,
+                     "The earliest time of impact over the candidates as (lo, hi), the tightest double interval "
+                     "holding the exact earliest time in [0, tmax] at which some candidate is within "
+                     "min_distance, or None (pruned by time and stopped early as earliest_toi).");
+  candidate_function("candidates_is_collision_free", &candidates_is_collision_free_py,
+                     "True iff no candidate comes within min_distance at some t in [0, tmax].");
+  candidate_function("candidates_max_collision_free_step", &candidates_max_collision_free_step_py,
+                     "The largest step s <= tmax keeping every candidate at distance > min_distance: tmax when "
+                     "none collides, else the largest double strictly below the earliest TOI's lo (0 for a "
+                     "collision at t = 0).");
   m.def("intersection_free", &intersection_free_py, py::arg("V"), py::arg("F"),
         "Exact static self-intersection check of a triangle mesh: True iff triangles sharing no vertex index "
         "are disjoint and triangles sharing one vertex meet only there (see exactccd/scene.hpp).\n\n"

@@ -1,0 +1,213 @@
+// The narrow phase over a range of candidate pairs, shared by the scene functions
+// (scene_ccd.cpp: the candidates of the scene's broad phase) and the batch functions over the
+// caller's own candidates (candidates_ccd.cpp, exactccd/candidates.hpp): every pair decided by
+// the exact primitive queries of exactccd/ccd.hpp with CcdParams{min_distance, tmax}, on
+// several threads (parallel.hpp), with the early exit and the time pruning of earliest_toi.
+//
+// A range of candidates is any type with
+//   std::size_t size() const;           // the number of candidates
+//   PairSides pair(std::size_t k) const; // candidate k: its kind and its two sides of vertices
+// whose candidates are in the order of the results (colliding_pairs returns them by k).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "exactccd/ccd.hpp"
+#include "exactccd/scene.hpp"
+#include "scene/parallel.hpp"
+#include "scene/scene_primitives.hpp"
+#include "scene/time_bounds.hpp"
+
+namespace exactccd::scene {
+
+/// Candidates per chunk of work: large enough to make handing out chunks cheap, small enough
+/// to balance queries whose costs differ by 100x.
+constexpr std::size_t kNarrowPhaseChunk = 64;
+
+/// The vertex indices of one side of a pair (1 to 3 of them: a point, an edge, a triangle).
+struct Side {
+  std::array<int, 3> v{};  ///< the vertex indices, the first n of them used
+  int n = 0;               ///< how many
+};
+
+/// One candidate pair: its kind and the vertices of its two sides (vertex-face: the vertex, the
+/// triangle; edge-edge: two edges; point-edge: the point, the edge; point-point: two points).
+struct PairSides {
+  CollisionKind kind = CollisionKind::vertex_face;  ///< which kind of pair
+  std::array<Side, 2> side;                         ///< its two sides
+};
+
+/// A point side (one vertex).
+inline Side point_side(int v) { return Side{{{v, 0, 0}}, 1}; }
+/// An edge side (two vertices).
+inline Side edge_side(int a, int b) { return Side{{{a, b, 0}}, 2}; }
+/// A triangle side (three vertices).
+inline Side triangle_side(const std::array<int, 3>& t) { return Side{t, 3}; }
+
+/// The questions asked of one pair of vertices moving from x0 to x1 (Vec3, or Vec2 for the
+/// plane), with params = {d, tmax}: every kind is handled by the same code, a pair being two
+/// sides of vertices, its query their points at t0 and t1 (the query type chosen by kind and
+/// dimension), its time-bounded box the hull of its vertices' boxes.
+template <class Point>
+class PairTests {
+ public:
+  static constexpr bool planar = std::is_same_v<Point, Vec2>;
+  using EE = std::conditional_t<planar, EdgeEdge2dQuery, EdgeEdgeQuery>;
+  using PE = std::conditional_t<planar, PointEdge2dQuery, PointEdgeQuery>;
+  using PP = std::conditional_t<planar, PointPoint2dQuery, PointPointQuery>;
+
+  /// The tests of pairs over these positions (kept by reference) for the question params.
+  PairTests(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params)
+      : x0_(x0), x1_(x1), params_(params) {}
+
+  /// The question {d, tmax}.
+  const CcdParams& params() const { return params_; }
+
+  /// f(query) for the pair's query of its kind (in 2D there are no vertex-face pairs).
+  template <class F>
+  auto with_query(const PairSides& r, F&& f) const {
+    const auto make = [&](auto tag) {
+      using Query = decltype(tag);
+      return pair_query<Query>(x0_, x1_, r.side[0].v.data(), r.side[0].n, r.side[1].v.data(), r.side[1].n);
+    };
+    switch (r.kind) {
+      case CollisionKind::vertex_face:
+        if constexpr (!planar) return f(make(VertexFaceQuery{}));
+        break;
+      case CollisionKind::edge_edge: return f(make(EE{}));
+      case CollisionKind::point_edge: return f(make(PE{}));
+      case CollisionKind::point_point: return f(make(PP{}));
+    }
+    throw std::logic_error("exactccd scene: a vertex-face pair in a 2D scene");
+  }
+
+  /// The time of impact of a pair (std::nullopt: no collision in [0, tmax]).
+  std::optional<TimeInterval> toi(const PairSides& r) const {
+    return with_query(r, [&](const auto& q) { return exactccd::toi(q, params_); });
+  }
+
+  /// Whether a pair collides at all.
+  bool collides(const PairSides& r) const {
+    return with_query(r, [&](const auto& q) { return exactccd::ccd(q, params_); });
+  }
+
+  /// Whether the boxes of the pair's two primitives over the times [0, h] (h in [0, 1]), grown
+  /// by d, overlap; false proves that the pair is not within d anywhere in [0, h].
+  bool may_touch_until(const PairSides& r, double h) const {
+    const auto box_of = [&](const Side& side) {
+      Box box = empty_box();
+      for (int i = 0; i < side.n; ++i) add_vertex_until(box, lift(x0_[side.v[i]]), lift(x1_[side.v[i]]), h);
+      return inflated(box, params_.min_distance);
+    };
+    return overlap(box_of(r.side[0]), box_of(r.side[1]));
+  }
+
+  /// True only if the pair certainly has no contact in [0, h]: for 3D vertex-face and edge-edge
+  /// pairs at d = 0, its four points are never coplanar during [0, h] (a contact needs
+  /// coplanarity; within d > 0 it does not, and the other kinds are not four points).
+  bool never_coplanar_until(const PairSides& r, double h) const {
+    if (planar || params_.min_distance > 0 ||
+        (r.kind != CollisionKind::vertex_face && r.kind != CollisionKind::edge_edge))
+      return false;
+    return with_query(r, [&](const auto& q) {
+      using Query = std::decay_t<decltype(q)>;
+      if constexpr (std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>) {
+        const auto p = rows(q);
+        return scene::never_coplanar_until({p[0], p[1], p[2], p[3]}, {p[4], p[5], p[6], p[7]}, h);
+      } else {
+        return false;
+      }
+    });
+  }
+
+ private:
+  const std::vector<Point>& x0_;
+  const std::vector<Point>& x1_;
+  CcdParams params_;
+};
+
+/// The order of enclosures of exact times (design.md, 5.3): by lo, then hi. For tightest
+/// enclosures, a precedes b iff a's time is smaller, or both lie in the same open interval
+/// between consecutive doubles (then they compare equal).
+inline bool earlier(const TimeInterval& a, const TimeInterval& b) {
+  return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
+}
+
+/// Every colliding candidate of the range with its time of impact, as {k, toi}, ascending in k,
+/// on `threads` threads (the result does not depend on their number).
+template <class Point, class Range>
+std::vector<std::pair<std::size_t, TimeInterval>> colliding_pairs(const Range& range, const PairTests<Point>& tests,
+                                                                  unsigned threads) {
+  std::vector<std::vector<std::pair<std::size_t, TimeInterval>>> found(threads);
+  parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
+    for (std::size_t k = begin; k < end; ++k)
+      if (const auto toi = tests.toi(range.pair(k))) found[w].emplace_back(k, *toi);
+    return true;
+  });
+  std::vector<std::pair<std::size_t, TimeInterval>> all;
+  for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return all;
+}
+
+/// The earliest time of impact over the range's candidates (the tightest double interval
+/// holding the exact earliest time), or std::nullopt when none collides; on `threads` threads,
+/// pruning by time (see the loop) and stopping at a collision at t = 0. The result does not
+/// depend on the number of threads.
+template <class Point, class Range>
+std::optional<TimeInterval> earliest_pair_toi(const Range& range, const PairTests<Point>& tests, unsigned threads) {
+  // `bound`: the smallest hi of a collision found by any worker. A pair with no collision in
+  // [0, bound] has its time t > bound >= (that collision's time), so its tightest enclosure
+  // comes strictly later in the order `earlier`: skipping it cannot change the result, whichever
+  // worker found what first. The result is the same for any number of threads.
+  std::atomic<double> bound{std::numeric_limits<double>::infinity()};
+  std::vector<std::optional<TimeInterval>> best(threads);
+  parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
+    for (std::size_t k = begin; k < end; ++k) {
+      // Cheapest first: boxes over [0, h] grown by d (with h >= 1 they are the swept boxes,
+      // which a broad phase found overlapping); whether the pair collides at all (a miss is
+      // mostly decided by the static filter in ~20 ns); whether its points can be coplanar
+      // before h (interval arithmetic on the volume cubic; contact pairs at d = 0 only);
+      // only then the time of impact, whose refinement to adjacent doubles costs microseconds.
+      const PairSides r = range.pair(k);
+      const double h = bound.load(std::memory_order_relaxed);
+      if (h < 1 && !tests.may_touch_until(r, h)) continue;
+      if (h < 1 && (!tests.collides(r) || tests.never_coplanar_until(r, h))) continue;
+      const auto toi = tests.toi(r);  // std::nullopt when the query does not collide
+      if (!toi) continue;
+      if (!best[w] || earlier(*toi, *best[w])) best[w] = toi;
+      for (double current = bound.load(); toi->hi < current && !bound.compare_exchange_weak(current, toi->hi);) {
+      }
+      if (toi->hi == 0) return false;  // a collision exactly at t = 0: nothing is earlier
+    }
+    return true;
+  });
+  std::optional<TimeInterval> result;
+  for (const auto& b : best)
+    if (b && (!result || earlier(*b, *result))) result = b;
+  return result;
+}
+
+/// Whether some candidate of the range collides; on `threads` threads, stopping at the first
+/// collision found.
+template <class Point, class Range>
+bool any_pair_collides(const Range& range, const PairTests<Point>& tests, unsigned threads) {
+  std::atomic<bool> hit{false};
+  parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t k = begin; k < end && !hit.load(std::memory_order_relaxed); ++k)
+      if (tests.collides(range.pair(k))) hit = true;
+    return !hit.load(std::memory_order_relaxed);
+  });
+  return hit;
+}
+
+}  // namespace exactccd::scene

@@ -1,0 +1,108 @@
+// The batch narrow phase over given candidates (exactccd/candidates.hpp) on one step of the
+// cloth-on-sphere scene at resolutions 32 and 64 (Google Benchmark): the candidates are the
+// scene's own broad-phase candidates, built once (as a simulator's line search reuses its
+// list); compared with the scene functions, which run the broad phase on every call, and with
+// the narrow phase alone over the same queries. One thread unless named. Figures: docs/scene.md.
+//
+//   build/candidates_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <map>
+
+#include "exactccd/exactccd.hpp"
+#include "scene/procedural_scenes.hpp"
+#include "scene/scene_primitives.hpp"
+
+namespace {
+
+using namespace exactccd;
+
+/// One step of the cloth scene at a resolution and its broad-phase candidates (built once).
+struct Fixture {
+  Scene scene;
+  CandidateSet candidates;
+  std::vector<VertexFaceQuery> vf;
+  std::vector<EdgeEdgeQuery> ee;
+};
+
+const Fixture& fixture(int resolution) {
+  static std::map<int, Fixture> cache;  // benchmark-local, filled on the main thread
+  auto it = cache.find(resolution);
+  if (it != cache.end()) return it->second;
+  Fixture f;
+  const scene::MovingMesh mesh = scene::procedural_scene("cloth", resolution, 1);
+  f.scene = Scene{mesh.positions_t0, mesh.positions_t1, mesh.triangles, {}, {}};
+  const scene::ScenePrimitives prim = scene::scene_primitives(f.scene);
+  const auto& e = prim.edges;
+  for (const auto& [v, t] : prim.candidates.vertex_face) {
+    const auto& tri = f.scene.triangles[t];
+    f.candidates.vertex_face.push_back({v, tri[0], tri[1], tri[2]});
+    f.vf.push_back(scene::vertex_face_query(f.scene, v, t));
+  }
+  for (const auto& [i, j] : prim.candidates.edge_edge) {
+    f.candidates.edge_edge.push_back({e[i][0], e[i][1], e[j][0], e[j][1]});
+    f.ee.push_back(scene::edge_edge_query(f.scene, e[i], e[j]));
+  }
+  return cache.emplace(resolution, std::move(f)).first->second;
+}
+
+void label(benchmark::State& state, const Fixture& f) {
+  state.counters["candidates"] = static_cast<double>(f.candidates.size());
+}
+
+/// The scene's max_collision_free_step (broad phase + narrow phase with pruning).
+void BM_SceneMaxStep(benchmark::State& state) {
+  const Fixture& f = fixture(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(max_collision_free_step(f.scene, SceneOptions{1}));
+  label(state, f);
+}
+
+/// The same answer over the given candidates.
+void BM_CandidatesMaxStep(benchmark::State& state) {
+  const Fixture& f = fixture(static_cast<int>(state.range(0)));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        max_collision_free_step(f.scene.positions_t0, f.scene.positions_t1, f.candidates, SceneOptions{1}));
+  label(state, f);
+}
+
+/// The scene's find_collisions.
+void BM_SceneFindCollisions(benchmark::State& state) {
+  const Fixture& f = fixture(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(find_collisions(f.scene, SceneOptions{1}));
+  label(state, f);
+}
+
+/// find_collisions over the given candidates on state.range(1) threads: wall time.
+void BM_CandidatesFindCollisions(benchmark::State& state) {
+  const Fixture& f = fixture(static_cast<int>(state.range(0)));
+  const SceneOptions options{static_cast<unsigned>(state.range(1))};
+  for (auto _ : state)
+    benchmark::DoNotOptimize(find_collisions(f.scene.positions_t0, f.scene.positions_t1, f.candidates, options));
+  label(state, f);
+}
+
+/// The narrow phase alone: every candidate's TOI by the primitive functions, in a plain loop
+/// over queries built beforehand, with the CcdParams overloads the batch functions call.
+void BM_PrimitiveToiLoop(benchmark::State& state) {
+  const Fixture& f = fixture(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    std::size_t hits = 0;
+    for (const auto& q : f.vf) hits += vertex_face_toi(q, CcdParams{}).has_value();
+    for (const auto& q : f.ee) hits += edge_edge_toi(q, CcdParams{}).has_value();
+    benchmark::DoNotOptimize(hits);
+  }
+  label(state, f);
+}
+
+#define EXACTCCD_SIZES ->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_SceneMaxStep) EXACTCCD_SIZES;
+BENCHMARK(BM_CandidatesMaxStep) EXACTCCD_SIZES;
+BENCHMARK(BM_SceneFindCollisions) EXACTCCD_SIZES;
+BENCHMARK(BM_CandidatesFindCollisions)->Args({32, 1})->Args({64, 1})->Args({64, 2})->UseRealTime()->Unit(
+    benchmark::kMillisecond);
+BENCHMARK(BM_PrimitiveToiLoop) EXACTCCD_SIZES;
+
+}  // namespace
+
+BENCHMARK_MAIN();
