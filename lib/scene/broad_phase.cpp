@@ -1,5 +1,7 @@
 #include "scene/broad_phase.hpp"
 
+#include "scene/candidate_finder.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -174,9 +176,9 @@ Box inflated(const Box& box, double d) {
   return out;
 }
 
-Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
-                           const std::vector<Edge>& edges, const std::vector<int>& vertices,
-                           const std::vector<int>& points) {
+Candidates sweep_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                            const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                            const std::vector<int>& points) {
   const auto hull_of = [&](const int* v, int n) {
     Box box = vertex_boxes[v[0]];
     for (int i = 1; i < n; ++i) box = hull(box, vertex_boxes[v[i]]);
@@ -219,6 +221,14 @@ Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vec
   std::vector<Box> boxes(positions_t0.size());
   for (int v = 0; v < static_cast<int>(boxes.size()); ++v) boxes[v] = swept_box(positions_t0, positions_t1, &v, 1);
   return find_candidates(boxes, triangles, edges, vertices, {});
+}
+
+Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                           const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                           const std::vector<int>& points, unsigned threads) {
+  BroadPhaseTrees trees(triangles, edges, vertices, points);
+  trees.fit(vertex_boxes, threads);
+  return trees.candidates(threads);
 }
 
 Candidates find_candidates(const MovingMesh& mesh, const std::vector<Edge>& edges) {

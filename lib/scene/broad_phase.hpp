@@ -16,6 +16,7 @@
 #include <array>
 #include <vector>
 
+#include "exactccd/scene.hpp"
 #include "scene/mesh.hpp"
 
 namespace exactccd::scene {
@@ -28,13 +29,8 @@ struct Box {
 /// Candidate pairs of one step: (vertex, triangle) and (edge, edge) by index into the mesh's
 /// vertices, triangles and unique_edges(), and (point, edge), (point, point) of isolated
 /// points. Pairs sharing a vertex are excluded (a vertex against its own triangles, edges with
-/// a common endpoint). Sorted, without duplicates.
-struct Candidates {
-  std::vector<std::array<int, 2>> vertex_face;  ///< {vertex, triangle}
-  std::vector<std::array<int, 2>> edge_edge;    ///< {edge i, edge j}, i < j
-  std::vector<std::array<int, 2>> point_edge;   ///< {point vertex, edge}
-  std::vector<std::array<int, 2>> point_point;  ///< {point vertex p, point vertex q}, p < q
-};
+/// a common endpoint). Sorted, without duplicates. (The public exactccd::SceneCandidates.)
+using Candidates = exactccd::SceneCandidates;
 
 /// The smallest box holding both boxes (exact: min and max).
 Box hull(const Box& a, const Box& b);
@@ -70,9 +66,18 @@ Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vec
 /// edge is the hull of its vertices' boxes): {vertex, triangle} for the `vertices` (ascending),
 /// {edge i, edge j}, and, for the isolated `points` (ascending, distinct, on no edge), {point,
 /// edge} and {point p, point q}; every pair whose boxes overlap and which shares no vertex.
+/// Bounding volume hierarchies (BroadPhaseTrees, candidate_finder.hpp) on up to `threads`
+/// threads; the result does not depend on `threads`.
 Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
                            const std::vector<Edge>& edges, const std::vector<int>& vertices,
-                           const std::vector<int>& points);
+                           const std::vector<int>& points, unsigned threads = 1);
+
+/// The same candidates as find_candidates(vertex_boxes, ...) by the serial sort-and-sweep the
+/// scene functions used before the bounding volume hierarchies: the reference of the tests and
+/// the benchmark.
+Candidates sweep_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                            const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                            const std::vector<int>& points);
 
 /// Pairs {i, j}, i < j, of triangles whose boxes over `positions` (a static mesh) overlap,
 /// adjacent triangles included; sorted.

@@ -206,7 +206,7 @@ template <class SceneT>
 std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
-  const ScenePrimitives prim = scene::scene_primitives(scene, params);
+  const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim, params);
   const unsigned threads = scene::resolve_threads(options.threads);
   std::vector<std::vector<Collision>> found(threads);
@@ -227,7 +227,7 @@ template <class SceneT>
 std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
-  const ScenePrimitives prim = scene::scene_primitives(scene, params);
+  const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim, params);
   const unsigned threads = scene::resolve_threads(options.threads);
   // `bound`: the smallest hi of a collision found by any worker. A pair with no collision in
@@ -266,7 +266,7 @@ template <class SceneT>
 bool is_collision_free_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
-  const ScenePrimitives prim = scene::scene_primitives(scene, params);
+  const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim, params);
   std::atomic<bool> hit{false};
   scene::parallel_chunks(range.size(), scene::resolve_threads(options.threads), kChunk,
