@@ -118,12 +118,6 @@ void sweep(const std::vector<Box>& a, const std::vector<Box>& b, bool same_set, 
 
 }  // namespace
 
-bool overlap(const Box& a, const Box& b) {
-  for (int k = 0; k < 3; ++k)
-    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
-  return true;
-}
-
 Box swept_box(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
               const int* vertices, int count) {
   const Vec3& first = positions_t0[vertices[0]];

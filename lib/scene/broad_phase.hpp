@@ -47,8 +47,11 @@ Box swept_box(const MovingMesh& mesh, const int* vertices, int count);
 Box swept_box(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
               const int* vertices, int count);
 
-/// Whether two closed boxes overlap (exact).
-bool overlap(const Box& a, const Box& b);
+/// Whether two closed boxes overlap (exact). Inline: the broad phase's innermost test.
+inline bool overlap(const Box& a, const Box& b) {
+  return !(a.hi[0] < b.lo[0] || b.hi[0] < a.lo[0] || a.hi[1] < b.lo[1] || b.hi[1] < a.lo[1] || a.hi[2] < b.lo[2] ||
+           b.hi[2] < a.lo[2]);
+}
 
 /// All candidate pairs whose swept boxes overlap (sort-and-sweep along the axis of largest
 /// extent, within strips along the second: broad_phase.cpp); every vertex of the

@@ -17,19 +17,24 @@ constexpr std::size_t kChunk = 256;
 /// is sorted whatever thread ran which chunk.
 template <class Emit>
 std::vector<std::array<int, 2>> gather(std::size_t n, unsigned threads, Emit&& emit) {
-  std::vector<std::vector<std::array<int, 2>>> chunks((n + kChunk - 1) / kChunk);
-  parallel_chunks(n, threads, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-    std::vector<std::array<int, 2>>& out = chunks[begin / kChunk];
+  // Each chunk's pairs are found in its worker's scratch list and stored at their exact size,
+  // so the chunks hold no spare capacity.
+  std::vector<std::vector<std::array<int, 2>>> chunks((n + kChunk - 1) / kChunk), scratch(threads);
+  parallel_chunks(n, threads, kChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
+    std::vector<std::array<int, 2>>& out = scratch[w];
+    out.clear();
     for (std::size_t i = begin; i < end; ++i) emit(i, out);
+    chunks[begin / kChunk].assign(out.begin(), out.end());
     return true;
   });
+  std::vector<std::vector<std::array<int, 2>>>().swap(scratch);
   std::size_t total = 0;
   for (const auto& c : chunks) total += c.size();
   std::vector<std::array<int, 2>> all;
   all.reserve(total);
   for (auto& c : chunks) {
     all.insert(all.end(), c.begin(), c.end());
-    std::vector<std::array<int, 2>>().swap(c);  // freed as it is copied: peak memory ~ one list
+    std::vector<std::array<int, 2>>().swap(c);  // freed as it is copied
   }
   return all;
 }
