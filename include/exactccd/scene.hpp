@@ -194,10 +194,16 @@ class SceneBroadPhase {
   /// of the scene and computes its candidates for the question of `options` (min_distance d,
   /// tmax).
   explicit SceneBroadPhase(const Scene& scene, const SceneOptions& options = {});
+  /// Releases the scene copy and the hierarchies.
   ~SceneBroadPhase();
+  /// Takes over another broad phase's state (the moved-from object may only be destroyed or
+  /// assigned to).
   SceneBroadPhase(SceneBroadPhase&&) noexcept;
+  /// Takes over another broad phase's state (as the move constructor).
   SceneBroadPhase& operator=(SceneBroadPhase&&) noexcept;
+  /// Not copyable (the hierarchies are large; build another from scene()).
   SceneBroadPhase(const SceneBroadPhase&) = delete;
+  /// Not copyable.
   SceneBroadPhase& operator=(const SceneBroadPhase&) = delete;
 
   /// Replaces the scene's positions at t = 1 (positions at t = 0 and topology kept), refits

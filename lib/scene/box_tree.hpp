@@ -3,8 +3,8 @@
 // The primitives are ordered once (build) along a Morton curve of their box centres and grouped
 // in leaves of kLeafSize consecutive primitives; the tree is the implicit complete binary tree
 // over the leaves (node 1 the root, node i's children 2i and 2i + 1), so it is stored as one
-// array of node boxes plus the order: memory linear in the number of primitives, no pointers.
-// refit() keeps the order and recomputes every node box bottom-up from the new primitive boxes.
+// array of node boxes, the leaf-ordered primitive boxes and the order: memory linear in the
+// number of primitives, no pointers. refit() keeps the order and recomputes every box.
 //
 // Exactness: a node box is the hull (exact min and max) of the boxes below it, so a query box
 // overlapping a primitive's box overlaps every node box above it, and query() reports exactly
@@ -13,26 +13,45 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "scene/broad_phase.hpp"
+#include "scene/parallel.hpp"
 
 namespace exactccd::scene {
 
-/// A refittable bounding volume hierarchy over n boxes (see above). Queries are const and
-/// thread-safe; build() and refit() are not (one writer).
+/// A refittable bounding volume hierarchy over n boxes (see above), given by box_of(i) for i in
+/// [0, n). Queries are const and thread-safe; build() and refit() are not (one writer).
 class BoxTree {
  public:
   /// Primitives per leaf.
-  static constexpr int kLeafSize = 4;
+  static constexpr int kLeafSize = 8;
 
-  /// Orders the primitives along a Morton curve of their box centres and fits the tree to
-  /// `boxes` (refit) on up to `threads` threads.
-  void build(const std::vector<Box>& boxes, unsigned threads);
+  /// Orders the n primitives along a Morton curve of the centres of their boxes box_of(i) and
+  /// fits the tree to them (refit), on up to `threads` threads. box_of must be thread-safe.
+  template <class BoxOf>
+  void build(std::size_t n, BoxOf&& box_of, unsigned threads) {
+    std::vector<std::pair<std::uint64_t, int>> keys(n);
+    const MortonFrame frame = morton_frame(n, box_of);
+    parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) keys[i] = {frame.code(box_of(i)), static_cast<int>(i)};
+    });
+    set_order(keys, threads);
+    refit(n, box_of, threads);
+  }
 
-  /// Keeps the order and recomputes every node box from `boxes` (the same count as at build;
-  /// throws std::invalid_argument otherwise), on up to `threads` threads.
-  void refit(const std::vector<Box>& boxes, unsigned threads);
+  /// Keeps the order and recomputes every box from box_of(i) (n as at build; throws
+  /// std::invalid_argument otherwise), on up to `threads` threads.
+  template <class BoxOf>
+  void refit(std::size_t n, BoxOf&& box_of, unsigned threads) {
+    require_size(n);
+    parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) leaf_boxes_[k] = box_of(static_cast<std::size_t>(order_[k]));
+    });
+    fit_nodes(threads);
+  }
 
   /// The number of primitives.
   int size() const { return static_cast<int>(order_.size()); }
@@ -42,7 +61,7 @@ class BoxTree {
   template <class Report>
   void query(const Box& query, Report&& report) const {
     if (order_.empty()) return;
-    int stack[64];
+    int stack[64];  // depth <= 30 (at most 2^31 / kLeafSize leaves), one sibling pending per level
     int top = 0;
     stack[top++] = 1;
     while (top > 0) {
@@ -61,6 +80,29 @@ class BoxTree {
   }
 
  private:
+  /// Indices per piece of parallel work.
+  static constexpr std::size_t kGrain = 1 << 12;
+
+  /// The bounding box of the finite box centres, quantised to 21 bits per axis.
+  struct MortonFrame {
+    std::array<double, 3> lo, scale;
+    /// The Morton code of a box's centre (0 for a centre that is not finite).
+    std::uint64_t code(const Box& box) const;
+  };
+
+  template <class BoxOf>
+  static MortonFrame morton_frame(std::size_t n, BoxOf& box_of) {
+    Box bounds = empty_bounds();
+    for (std::size_t i = 0; i < n; ++i) add_centre(bounds, box_of(i));
+    return frame_of(bounds);
+  }
+  static Box empty_bounds();
+  static void add_centre(Box& bounds, const Box& box);
+  static MortonFrame frame_of(const Box& bounds);
+  void set_order(std::vector<std::pair<std::uint64_t, int>>& keys, unsigned threads);
+  void require_size(std::size_t n) const;
+  void fit_nodes(unsigned threads);
+
   std::vector<int> order_;       ///< primitive indices in leaf order
   std::vector<Box> leaf_boxes_;  ///< the primitives' boxes in leaf order
   std::vector<Box> nodes_;       ///< node boxes, index 1..2 * first_leaf_ - 1 (0 unused)

@@ -139,15 +139,6 @@ Box swept_box(const MovingMesh& mesh, const int* vertices, int count) {
   return swept_box(mesh.positions_t0, mesh.positions_t1, vertices, count);
 }
 
-Box hull(const Box& a, const Box& b) {
-  Box h;
-  for (int k = 0; k < 3; ++k) {
-    h.lo[k] = std::min(a.lo[k], b.lo[k]);
-    h.hi[k] = std::max(a.hi[k], b.hi[k]);
-  }
-  return h;
-}
-
 // If dist(x, y) <= d for x in box A and y in box B, then |x_k - y_k| <= d on every axis k, so
 // [A.lo_k - d, A.hi_k + d] meets [B.lo_k, B.hi_k]: the boxes overlap once one of them (here:
 // both, the more conservative) is grown by d on every side, provided the grown bounds are at
@@ -221,7 +212,7 @@ Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vect
                            const std::vector<Edge>& edges, const std::vector<int>& vertices,
                            const std::vector<int>& points, unsigned threads) {
   BroadPhaseTrees trees(triangles, edges, vertices, points);
-  trees.fit(vertex_boxes, threads);
+  trees.fit(std::vector<Box>(vertex_boxes), threads);
   return trees.candidates(threads);
 }
 

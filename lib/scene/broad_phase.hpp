@@ -33,7 +33,14 @@ struct Box {
 using Candidates = exactccd::SceneCandidates;
 
 /// The smallest box holding both boxes (exact: min and max).
-Box hull(const Box& a, const Box& b);
+inline Box hull(const Box& a, const Box& b) {
+  Box h;
+  for (int k = 0; k < 3; ++k) {
+    h.lo[k] = a.lo[k] < b.lo[k] ? a.lo[k] : b.lo[k];
+    h.hi[k] = a.hi[k] > b.hi[k] ? a.hi[k] : b.hi[k];
+  }
+  return h;
+}
 
 /// `box` grown by d >= 0 on every side with outward rounding: it holds every point whose
 /// distance to the box is at most d. Two primitives within distance d of each other have

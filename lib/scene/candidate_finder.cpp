@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <utility>
 
 #include "scene/parallel.hpp"
 
@@ -45,36 +46,31 @@ BroadPhaseTrees::BroadPhaseTrees(const std::vector<Triangle>& triangles, const s
                                  const std::vector<int>& vertices, const std::vector<int>& points)
     : triangles_(triangles), edges_(edges), vertices_(vertices), points_(points) {}
 
-void BroadPhaseTrees::fit(const std::vector<Box>& vertex_boxes, unsigned threads) {
+Box BroadPhaseTrees::triangle_box(std::size_t t) const {
+  const Triangle& tri = triangles_[t];
+  return hull(hull(vertex_boxes_[tri[0]], vertex_boxes_[tri[1]]), vertex_boxes_[tri[2]]);
+}
+
+Box BroadPhaseTrees::edge_box(std::size_t e) const {
+  return hull(vertex_boxes_[edges_[e][0]], vertex_boxes_[edges_[e][1]]);
+}
+
+void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   if (built_ && vertex_boxes.size() != vertex_boxes_.size())
     throw std::invalid_argument("BroadPhaseTrees::fit: the number of vertices changed");
-  vertex_boxes_ = vertex_boxes;
-  const auto hull_of = [&](const int* v, int n) {
-    Box box = vertex_boxes_[v[0]];
-    for (int i = 1; i < n; ++i) box = hull(box, vertex_boxes_[v[i]]);
-    return box;
-  };
-  triangle_boxes_.resize(triangles_.size());
-  edge_boxes_.resize(edges_.size());
-  point_boxes_.resize(points_.size());
-  parallel_chunks(triangles_.size(), threads, 1 << 14, [&](std::size_t b, std::size_t e, unsigned) {
-    for (std::size_t t = b; t < e; ++t) triangle_boxes_[t] = hull_of(triangles_[t].data(), 3);
-    return true;
-  });
-  parallel_chunks(edges_.size(), threads, 1 << 14, [&](std::size_t b, std::size_t e, unsigned) {
-    for (std::size_t i = b; i < e; ++i) edge_boxes_[i] = hull_of(edges_[i].data(), 2);
-    return true;
-  });
-  for (std::size_t i = 0; i < points_.size(); ++i) point_boxes_[i] = vertex_boxes_[points_[i]];
+  vertex_boxes_ = std::move(vertex_boxes);
+  const auto triangle = [&](std::size_t t) { return triangle_box(t); };
+  const auto edge = [&](std::size_t e) { return edge_box(e); };
+  const auto point = [&](std::size_t i) { return point_box(i); };
   if (!built_) {
-    triangle_tree_.build(triangle_boxes_, threads);
-    edge_tree_.build(edge_boxes_, threads);
-    point_tree_.build(point_boxes_, threads);
+    triangle_tree_.build(triangles_.size(), triangle, threads);
+    edge_tree_.build(edges_.size(), edge, threads);
+    point_tree_.build(points_.size(), point, threads);
     built_ = true;
   } else {
-    triangle_tree_.refit(triangle_boxes_, threads);
-    edge_tree_.refit(edge_boxes_, threads);
-    point_tree_.refit(point_boxes_, threads);
+    triangle_tree_.refit(triangles_.size(), triangle, threads);
+    edge_tree_.refit(edges_.size(), edge, threads);
+    point_tree_.refit(points_.size(), point, threads);
   }
 }
 
@@ -97,7 +93,7 @@ Candidates BroadPhaseTrees::candidates(unsigned threads) const {
   c.edge_edge = gather(edges_.size(), threads, [&](std::size_t i, std::vector<std::array<int, 2>>& out) {
     const Edge& a = edges_[i];
     const std::size_t from = out.size();
-    edge_tree_.query(edge_boxes_[i], [&](int j) {
+    edge_tree_.query(edge_box(i), [&](int j) {
       const Edge& b = edges_[j];
       if (j > static_cast<int>(i) && a[0] != b[0] && a[0] != b[1] && a[1] != b[0] && a[1] != b[1])
         out.push_back({static_cast<int>(i), j});
@@ -108,12 +104,12 @@ Candidates BroadPhaseTrees::candidates(unsigned threads) const {
     // Isolated points are on no edge and distinct: no pair shares a vertex.
     c.point_edge = gather(points_.size(), threads, [&](std::size_t i, std::vector<std::array<int, 2>>& out) {
       const std::size_t from = out.size();
-      edge_tree_.query(point_boxes_[i], [&](int e) { out.push_back({points_[i], e}); });
+      edge_tree_.query(point_box(i), [&](int e) { out.push_back({points_[i], e}); });
       sorted_tail(out, from);
     });
     c.point_point = gather(points_.size(), threads, [&](std::size_t i, std::vector<std::array<int, 2>>& out) {
       const std::size_t from = out.size();
-      point_tree_.query(point_boxes_[i], [&](int j) {
+      point_tree_.query(point_box(i), [&](int j) {
         if (j > static_cast<int>(i)) out.push_back({points_[i], points_[j]});  // points ascending
       });
       sorted_tail(out, from);

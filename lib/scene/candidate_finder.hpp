@@ -21,7 +21,7 @@ class BroadPhaseTrees {
   /// Takes the box of every vertex (indexed by vertex): the first call orders the trees by the
   /// boxes and fits them, later calls refit them in the first call's order (no rebuild). Up to
   /// `threads` threads. Throws std::invalid_argument when a later call has another vertex count.
-  void fit(const std::vector<Box>& vertex_boxes, unsigned threads);
+  void fit(std::vector<Box> vertex_boxes, unsigned threads);
 
   /// Every pair of find_candidates() for the boxes of the last fit(): the pairs whose boxes
   /// overlap (closed, exact) and which share no vertex; sorted, without duplicates. Up to
@@ -33,7 +33,12 @@ class BroadPhaseTrees {
   const std::vector<Edge>& edges_;
   const std::vector<int>& vertices_;
   const std::vector<int>& points_;
-  std::vector<Box> vertex_boxes_, triangle_boxes_, edge_boxes_, point_boxes_;
+  /// The boxes of the last fit(): of a vertex, and of a triangle, an edge, an isolated point
+  /// (hulls of their vertices' boxes, computed when needed rather than stored).
+  std::vector<Box> vertex_boxes_;
+  Box triangle_box(std::size_t t) const;
+  Box edge_box(std::size_t e) const;
+  Box point_box(std::size_t i) const { return vertex_boxes_[static_cast<std::size_t>(points_[i])]; }
   BoxTree triangle_tree_, edge_tree_, point_tree_;
   bool built_ = false;
 };

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/candidate_finder.hpp"
 #include "scene/time_bounds.hpp"
 
 namespace exactccd {
@@ -162,15 +163,17 @@ ScenePrimitives scene_topology(const Scene2d& s, const CcdParams&) {
 
 ScenePrimitives scene_primitives(const Scene& s, const CcdParams& params, unsigned threads) {
   ScenePrimitives p = scene_topology(s, params);
-  p.candidates = find_candidates(vertex_boxes(s.positions_t0, s.positions_t1, params), s.triangles, p.edges,
-                                 p.vertices, p.points, threads);
+  BroadPhaseTrees trees(s.triangles, p.edges, p.vertices, p.points);
+  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params), threads);
+  p.candidates = trees.candidates(threads);
   return p;
 }
 
 ScenePrimitives scene_primitives(const Scene2d& s, const CcdParams& params, unsigned threads) {
   ScenePrimitives p = scene_topology(s, params);
-  p.candidates = find_candidates(vertex_boxes(s.positions_t0, s.positions_t1, params), triangles_of(s), p.edges,
-                                 p.vertices, p.points, threads);
+  BroadPhaseTrees trees(triangles_of(s), p.edges, p.vertices, p.points);
+  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params), threads);
+  p.candidates = trees.candidates(threads);
   return p;
 }
 

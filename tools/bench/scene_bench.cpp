@@ -7,7 +7,8 @@
 //   build/scene_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
 // The scaling set (BM_Step*, cloth at resolutions 16, 64, 220, 708: 1.8k to 1.0M triangles, on
-// 1 and 2 threads, wall time): the broad phase, the narrow phase over its candidates with the
+// 1 and 2 threads, wall time): the broad phase (built, and refitted by SceneBroadPhase), the
+// old serial sweep, the narrow phase over its candidates with the
 // filtered method (certified TOIs, as find_collisions) and the naive one, and the whole
 // find_collisions step. Run by tools/plot/scene_step.sh, which also runs
 //
@@ -180,6 +181,19 @@ void BM_StepBroad(benchmark::State& state) {
   step_label(state, f);
 }
 
+/// The reused broad phase: SceneBroadPhase::update() (refit of the hierarchies built once
+/// outside the timed loop, then the candidates) with the step's positions at t = 1, as a line
+/// search calls it, on state.range(1) threads.
+void BM_StepRefit(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  SceneBroadPhase broad(f.scene, SceneOptions{static_cast<unsigned>(state.range(1))});
+  for (auto _ : state) {
+    broad.update(f.scene.positions_t1);
+    benchmark::DoNotOptimize(broad.candidates().edge_edge.data());
+  }
+  step_label(state, f);
+}
+
 /// The narrow phase over the broad phase's candidates on state.range(1) threads, as
 /// find_collisions runs it (chunks of 64 candidates, the query built from the indices, its time
 /// of impact), with one method.
@@ -248,6 +262,7 @@ int peak_memory(int resolution) {
   ->ArgsProduct({{16, 64, 220, 708}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
 BENCHMARK(BM_StepSweep)->ArgsProduct({{16, 64, 220, 708}, {1}})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
 BENCHMARK(BM_StepBroad) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_StepRefit) EXACTCCD_STEP_SIZES;
 BENCHMARK_CAPTURE(BM_StepNarrow, filtered, Method::filtered) EXACTCCD_STEP_SIZES;
 BENCHMARK_CAPTURE(BM_StepNarrow, naive, tools::Method::naive) EXACTCCD_STEP_SIZES;
 BENCHMARK(BM_StepWhole) EXACTCCD_STEP_SIZES;
