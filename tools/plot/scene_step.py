@@ -36,7 +36,7 @@ def load(path):
         rest = parts[2:] if parts[0] == "BM_StepNarrow" else parts[1:]
         res, threads = int(rest[0]), int(rest[1])
         assert b["time_unit"] == "ms"
-        out[(phase, res, threads)] = (b["real_time"], int(b["triangles"]), int(b["candidates"]))
+        out[(phase, res, threads)] = (b["real_time"], int(b["triangles"]), int(b["candidates"]), b["cpu_time"])
     return data["context"], out
 
 
@@ -51,12 +51,15 @@ def main(step_path, memory_path, png, note=""):
     print(f"Medians of {context.get('num_cpus', '?')}-CPU wall times, one run ({context.get('date', '')}). {note}\n")
     print("| triangles | candidates | threads | broad (tree) | broad reused (refit) | broad (old sweep, 1 thr.) | "
           "narrow filtered | narrow naive | whole step | whole / naive narrow | (refit + narrow filtered) / naive "
-          "narrow | whole, 1 thr. / 2 thr. | peak RSS per triangle (2 thr.) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "narrow | whole / naive narrow, 1-thread CPU times | whole, 1 thr. / 2 thr. | peak RSS per triangle (2 thr.) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in sizes:
         for th in (1, 2):
             g = lambda p: t.get((p, r, th), (float("nan"), 0, 0))[0]  # noqa: E731
-            tri, cand = t[("BM_StepWhole", r, th)][1:]
+            tri, cand = t[("BM_StepWhole", r, th)][1:3]
+            cpu = ""
+            if th == 1:
+                cpu = f"{t[('BM_StepWhole', r, 1)][3] / t[('BM_StepNarrow/naive', r, 1)][3]:.1f}x"
             whole, naive = g("BM_StepWhole"), g("BM_StepNarrow/naive")
             sweep = t.get(("BM_StepSweep", r, 1), (float("nan"),))[0]
             speed = t[("BM_StepWhole", r, 1)][0] / t[("BM_StepWhole", r, 2)][0] if th == 2 else None
@@ -68,7 +71,7 @@ def main(step_path, memory_path, png, note=""):
             reused = (g("BM_StepRefit") + g("BM_StepNarrow/filtered")) / naive
             print(f"| {tri:,} | {cand:,} | {th} | {g('BM_StepBroad'):.1f} ms | {g('BM_StepRefit'):.1f} ms | "
                   f"{sweep:.1f} ms | {g('BM_StepNarrow/filtered'):.1f} ms | {naive:.1f} ms | {whole:.1f} ms | "
-                  f"{whole / naive:.1f}x | {reused:.1f}x | {'' if speed is None else f'{speed:.2f}x'} | {mem} |")
+                  f"{whole / naive:.1f}x | {reused:.1f}x | {cpu} | {'' if speed is None else f'{speed:.2f}x'} | {mem} |")
     fig, ax = plt.subplots(figsize=(8, 5))
     styles = {1: "-", 2: "--"}
     for i, (phase, label) in enumerate(PHASES):
