@@ -31,6 +31,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -62,9 +63,9 @@ struct Scene2d {
 
 /// Options of the scene functions.
 struct SceneOptions {
-  /// Threads of the narrow phase; 0 means std::thread::hardware_concurrency(); at most 1024
-  /// are used, and fewer when the system refuses to start more. The results do not depend
-  /// on it.
+  /// Threads of the broad and the narrow phase; 0 means std::thread::hardware_concurrency();
+  /// at most 1024 are used, and fewer when the system refuses to start more. The results do
+  /// not depend on it.
   unsigned threads = 0;
   /// The minimum separation d: a pair collides when its primitives come within distance <= d
   /// (Euclidean, between the closed primitives). Finite and >= 0; 0 asks for contact.
@@ -167,6 +168,63 @@ bool is_collision_free(const Scene2d& scene, const SceneOptions& options = {});
 /// The largest collision-free step of the 2D scene; see max_collision_free_step(const Scene&,
 /// const SceneOptions&).
 double max_collision_free_step(const Scene2d& scene, const SceneOptions& options = {});
+
+/// Candidate pairs of a scene's broad phase (SceneBroadPhase::candidates()): every pair of the
+/// scene's kinds (see the top of this file) whose boxes over [0, tmax], grown by d with outward
+/// rounding, overlap, and which shares no vertex index. A pair that comes within distance d at
+/// some t in [0, tmax] is always among them (most candidates do not collide). Every list
+/// sorted, without duplicates.
+struct SceneCandidates {
+  std::vector<std::array<int, 2>> vertex_face;  ///< {vertex, triangle}
+  std::vector<std::array<int, 2>> edge_edge;    ///< {edge i, edge j}, i < j, into SceneBroadPhase::edges()
+  std::vector<std::array<int, 2>> point_edge;   ///< {isolated point, edge} (edge into edges())
+  std::vector<std::array<int, 2>> point_point;  ///< {isolated point p, isolated point q}, p < q
+};
+
+/// A scene's broad phase kept across calls: bounding volume hierarchies over the triangles, the
+/// edges and the isolated points, built once and refitted (not rebuilt) when only the positions
+/// at t = 1 change, as in a line search that tries several steps from the same positions at
+/// t = 0 over the same topology. The candidates are always exactly those a new SceneBroadPhase
+/// of the current scene would give (the hierarchy's shape affects only speed). Built and
+/// queried on options.threads threads. Not thread-safe for update() concurrently with reads;
+/// const members may be called from several threads.
+class SceneBroadPhase {
+ public:
+  /// Validates the scene and the options (std::invalid_argument, as validate()), keeps a copy
+  /// of the scene and computes its candidates for the question of `options` (min_distance d,
+  /// tmax).
+  explicit SceneBroadPhase(const Scene& scene, const SceneOptions& options = {});
+  /// Releases the scene copy and the hierarchies.
+  ~SceneBroadPhase();
+  /// Takes over another broad phase's state (the moved-from object may only be destroyed or
+  /// assigned to).
+  SceneBroadPhase(SceneBroadPhase&&) noexcept;
+  /// Takes over another broad phase's state (as the move constructor).
+  SceneBroadPhase& operator=(SceneBroadPhase&&) noexcept;
+  /// Not copyable (the hierarchies are large; build another from scene()).
+  SceneBroadPhase(const SceneBroadPhase&) = delete;
+  /// Not copyable.
+  SceneBroadPhase& operator=(const SceneBroadPhase&) = delete;
+
+  /// Replaces the scene's positions at t = 1 (positions at t = 0 and topology kept), refits
+  /// the hierarchies and recomputes the candidates. Throws std::invalid_argument (leaving the
+  /// object unchanged) when the size differs from positions_t0 or a coordinate is not finite.
+  void update(const std::vector<Vec3>& positions_t1);
+
+  /// The scene as it is now (the last positions_t1 given).
+  const Scene& scene() const;
+
+  /// The scene's edges (the triangles' unique edges and the extra edges, each ascending,
+  /// sorted): what SceneCandidates::edge_edge and point_edge index.
+  const std::vector<std::array<int, 2>>& edges() const;
+
+  /// The candidates of the scene as it is now.
+  const SceneCandidates& candidates() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// Exact static self-intersection check of a triangle mesh: true iff
 /// - every two triangles with no vertex index in common are disjoint as closed triangles, and

@@ -1,5 +1,7 @@
 #include "scene/broad_phase.hpp"
 
+#include "scene/candidate_finder.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -116,12 +118,6 @@ void sweep(const std::vector<Box>& a, const std::vector<Box>& b, bool same_set, 
 
 }  // namespace
 
-bool overlap(const Box& a, const Box& b) {
-  for (int k = 0; k < 3; ++k)
-    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
-  return true;
-}
-
 Box swept_box(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
               const int* vertices, int count) {
   const Vec3& first = positions_t0[vertices[0]];
@@ -141,15 +137,6 @@ Box swept_box(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& po
 
 Box swept_box(const MovingMesh& mesh, const int* vertices, int count) {
   return swept_box(mesh.positions_t0, mesh.positions_t1, vertices, count);
-}
-
-Box hull(const Box& a, const Box& b) {
-  Box h;
-  for (int k = 0; k < 3; ++k) {
-    h.lo[k] = std::min(a.lo[k], b.lo[k]);
-    h.hi[k] = std::max(a.hi[k], b.hi[k]);
-  }
-  return h;
 }
 
 // If dist(x, y) <= d for x in box A and y in box B, then |x_k - y_k| <= d on every axis k, so
@@ -174,9 +161,9 @@ Box inflated(const Box& box, double d) {
   return out;
 }
 
-Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
-                           const std::vector<Edge>& edges, const std::vector<int>& vertices,
-                           const std::vector<int>& points) {
+Candidates sweep_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                            const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                            const std::vector<int>& points) {
   const auto hull_of = [&](const int* v, int n) {
     Box box = vertex_boxes[v[0]];
     for (int i = 1; i < n; ++i) box = hull(box, vertex_boxes[v[i]]);
@@ -219,6 +206,14 @@ Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vec
   std::vector<Box> boxes(positions_t0.size());
   for (int v = 0; v < static_cast<int>(boxes.size()); ++v) boxes[v] = swept_box(positions_t0, positions_t1, &v, 1);
   return find_candidates(boxes, triangles, edges, vertices, {});
+}
+
+Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                           const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                           const std::vector<int>& points, unsigned threads) {
+  BroadPhaseTrees trees(triangles, edges, vertices, points);
+  trees.fit(std::vector<Box>(vertex_boxes), threads);
+  return trees.candidates(threads);
 }
 
 Candidates find_candidates(const MovingMesh& mesh, const std::vector<Edge>& edges) {

@@ -16,6 +16,7 @@
 #include <array>
 #include <vector>
 
+#include "exactccd/scene.hpp"
 #include "scene/mesh.hpp"
 
 namespace exactccd::scene {
@@ -28,16 +29,18 @@ struct Box {
 /// Candidate pairs of one step: (vertex, triangle) and (edge, edge) by index into the mesh's
 /// vertices, triangles and unique_edges(), and (point, edge), (point, point) of isolated
 /// points. Pairs sharing a vertex are excluded (a vertex against its own triangles, edges with
-/// a common endpoint). Sorted, without duplicates.
-struct Candidates {
-  std::vector<std::array<int, 2>> vertex_face;  ///< {vertex, triangle}
-  std::vector<std::array<int, 2>> edge_edge;    ///< {edge i, edge j}, i < j
-  std::vector<std::array<int, 2>> point_edge;   ///< {point vertex, edge}
-  std::vector<std::array<int, 2>> point_point;  ///< {point vertex p, point vertex q}, p < q
-};
+/// a common endpoint). Sorted, without duplicates. (The public exactccd::SceneCandidates.)
+using Candidates = exactccd::SceneCandidates;
 
 /// The smallest box holding both boxes (exact: min and max).
-Box hull(const Box& a, const Box& b);
+inline Box hull(const Box& a, const Box& b) {
+  Box h;
+  for (int k = 0; k < 3; ++k) {
+    h.lo[k] = a.lo[k] < b.lo[k] ? a.lo[k] : b.lo[k];
+    h.hi[k] = a.hi[k] > b.hi[k] ? a.hi[k] : b.hi[k];
+  }
+  return h;
+}
 
 /// `box` grown by d >= 0 on every side with outward rounding: it holds every point whose
 /// distance to the box is at most d. Two primitives within distance d of each other have
@@ -51,8 +54,11 @@ Box swept_box(const MovingMesh& mesh, const int* vertices, int count);
 Box swept_box(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
               const int* vertices, int count);
 
-/// Whether two closed boxes overlap (exact).
-bool overlap(const Box& a, const Box& b);
+/// Whether two closed boxes overlap (exact). Inline: the broad phase's innermost test.
+inline bool overlap(const Box& a, const Box& b) {
+  return !(a.hi[0] < b.lo[0] || b.hi[0] < a.lo[0] || a.hi[1] < b.lo[1] || b.hi[1] < a.lo[1] || a.hi[2] < b.lo[2] ||
+           b.hi[2] < a.lo[2]);
+}
 
 /// All candidate pairs whose swept boxes overlap (sort-and-sweep along the axis of largest
 /// extent, within strips along the second: broad_phase.cpp); every vertex of the
@@ -70,9 +76,18 @@ Candidates find_candidates(const std::vector<Vec3>& positions_t0, const std::vec
 /// edge is the hull of its vertices' boxes): {vertex, triangle} for the `vertices` (ascending),
 /// {edge i, edge j}, and, for the isolated `points` (ascending, distinct, on no edge), {point,
 /// edge} and {point p, point q}; every pair whose boxes overlap and which shares no vertex.
+/// Bounding volume hierarchies (BroadPhaseTrees, candidate_finder.hpp) on up to `threads`
+/// threads; the result does not depend on `threads`.
 Candidates find_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
                            const std::vector<Edge>& edges, const std::vector<int>& vertices,
-                           const std::vector<int>& points);
+                           const std::vector<int>& points, unsigned threads = 1);
+
+/// The same candidates as find_candidates(vertex_boxes, ...) by the serial sort-and-sweep the
+/// scene functions used before the bounding volume hierarchies: the reference of the tests and
+/// the benchmark.
+Candidates sweep_candidates(const std::vector<Box>& vertex_boxes, const std::vector<Triangle>& triangles,
+                            const std::vector<Edge>& edges, const std::vector<int>& vertices,
+                            const std::vector<int>& points);
 
 /// Pairs {i, j}, i < j, of triangles whose boxes over `positions` (a static mesh) overlap,
 /// adjacent triangles included; sorted.

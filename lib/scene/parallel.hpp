@@ -72,4 +72,19 @@ unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Bod
   return static_cast<unsigned>(pool.size() + 1);
 }
 
+/// Calls body(begin, end) over pieces of [0, n) of `grain` indices on up to `threads` threads
+/// (parallel_chunks), or once over all of [0, n) on the calling thread when n < 4 grain or
+/// threads <= 1 (starting threads costs more than a short loop).
+template <class Body>
+void parallel_ranges(std::size_t n, unsigned threads, std::size_t grain, Body&& body) {
+  if (threads <= 1 || n < 4 * grain) {
+    body(std::size_t{0}, n);
+    return;
+  }
+  parallel_chunks(n, threads, grain, [&](std::size_t begin, std::size_t end, unsigned) {
+    body(begin, end);
+    return true;
+  });
+}
+
 }  // namespace exactccd::scene

@@ -110,7 +110,7 @@ template <class SceneT>
 std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
-  const ScenePrimitives prim = scene::scene_primitives(scene, params);
+  const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
   const scene::PairTests<typename CandidateRange<SceneT>::Point> tests(scene.positions_t0, scene.positions_t1, params);
   std::vector<Collision> all;
@@ -124,7 +124,7 @@ template <class SceneT>
 std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
-  const ScenePrimitives prim = scene::scene_primitives(scene, params);
+  const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
   const scene::PairTests<typename CandidateRange<SceneT>::Point> tests(scene.positions_t0, scene.positions_t1, params);
   return scene::earliest_pair_toi(range, tests, scene::resolve_threads(options.threads));
@@ -134,7 +134,7 @@ template <class SceneT>
 bool is_collision_free_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
-  const ScenePrimitives prim = scene::scene_primitives(scene, params);
+  const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
   const scene::PairTests<typename CandidateRange<SceneT>::Point> tests(scene.positions_t0, scene.positions_t1, params);
   return !scene::any_pair_collides(range, tests, scene::resolve_threads(options.threads));

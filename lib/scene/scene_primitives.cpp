@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/candidate_finder.hpp"
 #include "scene/time_bounds.hpp"
 
 namespace exactccd {
@@ -93,10 +94,10 @@ void require_valid_triangles(const std::vector<Triangle>& triangles, std::size_t
 
 namespace {
 
-/// The primitives of a 3D or 2D scene (validated); `with_points`: whether isolated points
-/// form point-edge and point-point pairs.
+/// The primitives of a 3D or 2D scene (validated), without candidates; `with_points`: whether
+/// isolated points form point-edge and point-point pairs.
 template <class SceneT>
-ScenePrimitives primitives(const SceneT& s, const CcdParams& params, bool with_points) {
+ScenePrimitives topology(const SceneT& s, bool with_points) {
   const std::vector<Triangle>& triangles = triangles_of(s);
   ScenePrimitives p;
   p.edges = unique_edges(triangles);
@@ -116,12 +117,17 @@ ScenePrimitives primitives(const SceneT& s, const CcdParams& params, bool with_p
     std::sort(p.points.begin(), p.points.end());
     p.points.erase(std::unique(p.points.begin(), p.points.end()), p.points.end());
   }
-  // Each vertex's box over [0, tmax], grown by d: the exact swept box (input coordinates) over
-  // the whole step, else the certified enclosure of add_vertex_until; then inflated() (both
-  // proofs next to their code). A pair within d at some t in [0, tmax] has overlapping boxes.
-  std::vector<Box> boxes(s.positions_t0.size());
+  return p;
+}
+
+// Each vertex's box over [0, tmax], grown by d: the exact swept box (input coordinates) over
+// the whole step, else the certified enclosure of add_vertex_until; then inflated() (both
+// proofs next to their code). A pair within d at some t in [0, tmax] has overlapping boxes.
+template <class Point>
+std::vector<Box> boxes_of(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params) {
+  std::vector<Box> boxes(x0.size());
   for (std::size_t v = 0; v < boxes.size(); ++v) {
-    const Vec3 a = lift(s.positions_t0[v]), b = lift(s.positions_t1[v]);
+    const Vec3 a = lift(x0[v]), b = lift(x1[v]);
     Box box;
     if (params.tmax == 1.0) {
       box.lo = {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
@@ -132,20 +138,43 @@ ScenePrimitives primitives(const SceneT& s, const CcdParams& params, bool with_p
     }
     boxes[v] = inflated(box, params.min_distance);
   }
-  p.candidates = find_candidates(boxes, triangles, p.edges, p.vertices, p.points);
-  return p;
+  return boxes;
 }
 
 }  // namespace
 
-ScenePrimitives scene_primitives(const Scene& s, const CcdParams& params) {
-  validate(s);
-  return primitives(s, params, params.min_distance > 0);
+std::vector<Box> vertex_boxes(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const CcdParams& params) {
+  return boxes_of(x0, x1, params);
 }
 
-ScenePrimitives scene_primitives(const Scene2d& s, const CcdParams& params) {
+std::vector<Box> vertex_boxes(const std::vector<Vec2>& x0, const std::vector<Vec2>& x1, const CcdParams& params) {
+  return boxes_of(x0, x1, params);
+}
+
+ScenePrimitives scene_topology(const Scene& s, const CcdParams& params) {
   validate(s);
-  return primitives(s, params, true);
+  return topology(s, params.min_distance > 0);
+}
+
+ScenePrimitives scene_topology(const Scene2d& s, const CcdParams&) {
+  validate(s);
+  return topology(s, true);
+}
+
+ScenePrimitives scene_primitives(const Scene& s, const CcdParams& params, unsigned threads) {
+  ScenePrimitives p = scene_topology(s, params);
+  BroadPhaseTrees trees(s.triangles, p.edges, p.vertices, p.points);
+  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params), threads);
+  p.candidates = trees.candidates(threads);
+  return p;
+}
+
+ScenePrimitives scene_primitives(const Scene2d& s, const CcdParams& params, unsigned threads) {
+  ScenePrimitives p = scene_topology(s, params);
+  BroadPhaseTrees trees(triangles_of(s), p.edges, p.vertices, p.points);
+  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params), threads);
+  p.candidates = trees.candidates(threads);
+  return p;
 }
 
 VertexFaceQuery vertex_face_query(const Scene& s, int v, int t) {

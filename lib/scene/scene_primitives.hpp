@@ -37,11 +37,29 @@ void require_valid_triangles(const std::vector<Triangle>& triangles, std::size_t
 
 /// Validates the scene (exactccd::validate) and computes its primitives and candidates for the
 /// question "within distance params.min_distance at some t in [0, params.tmax]" (params
-/// assumed valid: exactccd::validate(SceneOptions)).
-ScenePrimitives scene_primitives(const Scene& scene, const CcdParams& params = {});
+/// assumed valid: exactccd::validate(SceneOptions)); the broad phase on up to `threads` threads
+/// (the result does not depend on them).
+ScenePrimitives scene_primitives(const Scene& scene, const CcdParams& params = {}, unsigned threads = 1);
 
 /// As above for a scene in the plane (no triangles; isolated points for every d).
-ScenePrimitives scene_primitives(const Scene2d& scene, const CcdParams& params = {});
+ScenePrimitives scene_primitives(const Scene2d& scene, const CcdParams& params = {}, unsigned threads = 1);
+
+/// scene_primitives() without the candidates (validates the scene).
+ScenePrimitives scene_topology(const Scene& scene, const CcdParams& params);
+
+/// As above for a scene in the plane.
+ScenePrimitives scene_topology(const Scene2d& scene, const CcdParams& params);
+
+/// The box of every vertex over the times [0, params.tmax], grown by params.min_distance (the
+/// exact swept box when tmax = 1, else add_vertex_until's certified one; inflated()): two
+/// primitives within that distance at some such time have overlapping hulls of their
+/// vertices' boxes. 2D points lie in the plane z = 0.
+std::vector<Box> vertex_boxes(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
+                              const CcdParams& params);
+
+/// As above for points in the plane.
+std::vector<Box> vertex_boxes(const std::vector<Vec2>& positions_t0, const std::vector<Vec2>& positions_t1,
+                              const CcdParams& params);
 
 /// Throws std::invalid_argument unless params.min_distance is finite and >= 0 and params.tmax
 /// is in (0, 1].

@@ -5,11 +5,28 @@
 // time). Figures: docs/scene.md.
 //
 //   build/scene_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// The scaling set (BM_Step*, cloth at resolutions 16, 64, 220, 708: 1.8k to 1.0M triangles, on
+// 1 and 2 threads, wall time): the broad phase (built, and refitted by SceneBroadPhase), the
+// old serial sweep, the narrow phase over its candidates with the
+// filtered method (certified TOIs, as find_collisions) and the naive one, and the whole
+// find_collisions step. Run by tools/plot/scene_step.sh, which also runs
+//
+//   build/scene_bench --peak_memory=RESOLUTION
+//
+// (one find_collisions step on 2 threads in a fresh process; prints JSON with getrusage's
+// ru_maxrss, the process's peak resident set, after building the scene and after the step).
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
+
+#include <cstdio>
+#include <cstring>
 #include <map>
+#include <string>
 
 #include "exactccd/exactccd.hpp"
+#include "scene/parallel.hpp"
 #include "scene/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "tools/methods.hpp"
@@ -109,6 +126,147 @@ void BM_IntersectionFree(benchmark::State& state) {
   label(state, f);
 }
 
+/// One step of the cloth scene at a resolution and its candidates (1 thread; built once, no
+/// prebuilt queries: at 1M triangles they would not fit in memory).
+struct StepFixture {
+  Scene scene;
+  scene::ScenePrimitives prim;
+};
+
+Scene cloth_scene(int resolution) {
+  const scene::MovingMesh mesh = scene::procedural_scene("cloth", resolution, 1);
+  Scene s;
+  s.positions_t0 = mesh.positions_t0;
+  s.positions_t1 = mesh.positions_t1;
+  s.triangles = mesh.triangles;
+  return s;
+}
+
+const StepFixture& step_fixture(int resolution) {
+  static std::map<int, StepFixture> cache;  // benchmark-local, filled on the main thread
+  auto it = cache.find(resolution);
+  if (it != cache.end()) return it->second;
+  // Only one large scene at a time.
+  for (auto k = cache.begin(); k != cache.end();) k = k->first >= 128 ? cache.erase(k) : std::next(k);
+  StepFixture f;
+  f.scene = cloth_scene(resolution);
+  f.prim = scene::scene_primitives(f.scene);
+  return cache.emplace(resolution, std::move(f)).first->second;
+}
+
+void step_label(benchmark::State& state, const StepFixture& f) {
+  state.counters["triangles"] = static_cast<double>(f.scene.triangles.size());
+  state.counters["candidates"] = static_cast<double>(f.prim.candidates.vertex_face.size() +
+                                                     f.prim.candidates.edge_edge.size());
+  state.counters["threads"] = static_cast<double>(state.range(1));
+}
+
+/// The serial sort-and-sweep broad phase the tree replaced (sweep_candidates), from the same
+/// vertex boxes: the reference for the choice of the tree.
+void BM_StepSweep(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    const auto boxes = scene::vertex_boxes(f.scene.positions_t0, f.scene.positions_t1, {});
+    benchmark::DoNotOptimize(
+        scene::sweep_candidates(boxes, f.scene.triangles, f.prim.edges, f.prim.vertices, f.prim.points));
+  }
+  step_label(state, f);
+}
+
+/// The broad phase of find_collisions (scene_primitives) on state.range(1) threads.
+void BM_StepBroad(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const unsigned threads = static_cast<unsigned>(state.range(1));
+  for (auto _ : state) benchmark::DoNotOptimize(scene::scene_primitives(f.scene, {}, threads));
+  step_label(state, f);
+}
+
+/// The reused broad phase: SceneBroadPhase::update() (refit of the hierarchies built once
+/// outside the timed loop, then the candidates) with the step's positions at t = 1, as a line
+/// search calls it, on state.range(1) threads.
+void BM_StepRefit(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  SceneBroadPhase broad(f.scene, SceneOptions{static_cast<unsigned>(state.range(1))});
+  for (auto _ : state) {
+    broad.update(f.scene.positions_t1);
+    benchmark::DoNotOptimize(broad.candidates().edge_edge.data());
+  }
+  step_label(state, f);
+}
+
+/// The narrow phase over the broad phase's candidates on state.range(1) threads, as
+/// find_collisions runs it (chunks of 64 candidates, the query built from the indices, its time
+/// of impact), with one method.
+template <class M>
+void BM_StepNarrow(benchmark::State& state, M method) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const unsigned threads = static_cast<unsigned>(state.range(1));
+  const auto& vf = f.prim.candidates.vertex_face;
+  const auto& ee = f.prim.candidates.edge_edge;
+  std::vector<std::size_t> hits(threads);
+  for (auto _ : state) {
+    std::fill(hits.begin(), hits.end(), 0);
+    scene::parallel_chunks(vf.size() + ee.size(), threads, 64, [&](std::size_t begin, std::size_t end, unsigned w) {
+      for (std::size_t k = begin; k < end; ++k) {
+        if (k < vf.size())
+          hits[w] += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), method).has_value();
+        else {
+          const auto& pair = ee[k - vf.size()];
+          hits[w] += toi(scene::edge_edge_query(f.scene, f.prim.edges[pair[0]], f.prim.edges[pair[1]]), method)
+                         .has_value();
+        }
+      }
+      return true;
+    });
+    benchmark::DoNotOptimize(hits.data());
+  }
+  step_label(state, f);
+  std::size_t total = 0;
+  for (std::size_t h : hits) total += h;
+  state.counters["collisions"] = static_cast<double>(total);
+}
+
+/// The whole step: find_collisions (broad and exact narrow phase) on state.range(1) threads.
+void BM_StepWhole(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const SceneOptions options{static_cast<unsigned>(state.range(1))};
+  std::size_t found = 0;
+  for (auto _ : state) {
+    const auto c = find_collisions(f.scene, options);
+    found = c.size();
+    benchmark::DoNotOptimize(c.data());
+  }
+  step_label(state, f);
+  state.counters["collisions"] = static_cast<double>(found);
+}
+
+/// Peak resident memory of one 2-thread find_collisions step at `resolution` in this process:
+/// getrusage's ru_maxrss (KiB on Linux) after building the scene and after the step.
+int peak_memory(int resolution) {
+  const auto max_rss_kb = [] {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<long>(usage.ru_maxrss);
+  };
+  const Scene s = cloth_scene(resolution);
+  const long before = max_rss_kb();
+  const auto collisions = find_collisions(s, SceneOptions{2});
+  const long after = max_rss_kb();
+  std::printf("{\"resolution\": %d, \"triangles\": %zu, \"vertices\": %zu, \"collisions\": %zu, "
+              "\"max_rss_kb_scene\": %ld, \"max_rss_kb_step\": %ld}\n",
+              resolution, s.triangles.size(), s.positions_t0.size(), collisions.size(), before, after);
+  return 0;
+}
+
+#define EXACTCCD_STEP_SIZES                                                                                 \
+  ->ArgsProduct({{16, 64, 220, 708}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3)
+BENCHMARK(BM_StepSweep)->ArgsProduct({{16, 64, 220, 708}, {1}})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+BENCHMARK(BM_StepBroad) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_StepRefit) EXACTCCD_STEP_SIZES;
+BENCHMARK_CAPTURE(BM_StepNarrow, filtered, Method::filtered) EXACTCCD_STEP_SIZES;
+BENCHMARK_CAPTURE(BM_StepNarrow, naive, tools::Method::naive) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_StepWhole) EXACTCCD_STEP_SIZES;
+
 #define EXACTCCD_SCENE_SIZES ->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_BroadPhase) EXACTCCD_SCENE_SIZES;
 BENCHMARK_CAPTURE(BM_Narrow, filtered, Method::filtered) EXACTCCD_SCENE_SIZES;
@@ -122,4 +280,12 @@ BENCHMARK(BM_IntersectionFree) EXACTCCD_SCENE_SIZES;
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp(argv[i], "--peak_memory=", 14) == 0) return peak_memory(std::stoi(argv[i] + 14));
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

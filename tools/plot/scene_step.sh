@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The scene step against mesh size and threads (issue 14, item 3): one run of the BM_Step*
+# benchmarks of build/scene_bench (cloth over a sphere, 1.8k to 1.0M triangles, 1 and 2
+# threads, wall time, median of 3 repetitions), and the peak resident memory of one 2-thread
+# find_collisions step per size, each in a fresh process (getrusage ru_maxrss). Writes
+# docs/figures/scene_step.json, scene_step_memory.json, scene_step.md and scene_step.png.
+# Needs a Release build of scene_bench in build/ and Debian's python3-matplotlib.
+# Usage: bash tools/plot/scene_step.sh   (about 15 minutes on an idle 2-core machine)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+out=docs/figures
+mkdir -p "$out"
+load=$(uptime)
+echo "== load before: $load"
+build/scene_bench --benchmark_filter='BM_Step' --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+  --benchmark_out="$out/scene_step.json" --benchmark_out_format=json
+: > "$out/scene_step_memory.json.tmp"
+for r in 16 64 220 708; do build/scene_bench --peak_memory="$r" >> "$out/scene_step_memory.json.tmp"; done
+mv "$out/scene_step_memory.json.tmp" "$out/scene_step_memory.json"
+echo "== load after: $(uptime)"
+/usr/bin/python3 tools/plot/scene_step.py "$out/scene_step.json" "$out/scene_step_memory.json" "$out/scene_step.png" \
+  "load before: $load; after: $(uptime)" > "$out/scene_step.md"
+cat "$out/scene_step.md"
