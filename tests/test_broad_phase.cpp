@@ -6,9 +6,11 @@
 // functions give over the reference candidates, at every thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "exactccd/exactccd.hpp"
+#include "scene/box_tree.hpp"
 #include "scene/broad_phase.hpp"
 #include "scene/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
@@ -258,6 +260,56 @@ TEST(BroadPhase, SceneFunctionsUnchangedAtEveryThreadCount) {
       }
     }
   }
+}
+
+
+/// Random boxes on a small integer grid (many equal, touching and nested boxes), `n` of them.
+std::vector<scene::Box> grid_boxes(std::size_t n, std::mt19937& rng) {
+  std::uniform_int_distribution<int> corner(0, 12), size(0, 3);
+  std::vector<scene::Box> boxes(n);
+  for (auto& b : boxes)
+    for (int k = 0; k < 3; ++k) {
+      b.lo[k] = corner(rng);
+      b.hi[k] = b.lo[k] + size(rng);
+    }
+  return boxes;
+}
+
+/// BoxTree::pair_tasks and pairs_from, of a tree against itself and against another: every
+/// overlapping pair (brute force, written out) exactly once, whatever the number of tasks.
+TEST(BoxTreePairs, EveryOverlappingPairOnceWhateverTheTasks) {
+  std::mt19937 rng(14);
+  const auto overlapping = [](const scene::Box& a, const scene::Box& b) {
+    for (int k = 0; k < 3; ++k)
+      if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+    return true;
+  };
+  for (const std::size_t na : {0u, 1u, 7u, 8u, 9u, 100u, 700u})
+    for (const std::size_t nb : {0u, 3u, 64u, 333u}) {
+      const std::vector<scene::Box> a = grid_boxes(na, rng), b = grid_boxes(nb, rng);
+      scene::BoxTree ta, tb;
+      ta.build(a.size(), [&](std::size_t i) { return a[i]; }, 2);
+      tb.build(b.size(), [&](std::size_t i) { return b[i]; }, 1);
+      std::vector<std::array<int, 2>> want_self, want_cross;
+      for (std::size_t i = 0; i < na; ++i) {
+        for (std::size_t j = i + 1; j < na; ++j)
+          if (overlapping(a[i], a[j])) want_self.push_back({static_cast<int>(i), static_cast<int>(j)});
+        for (std::size_t j = 0; j < nb; ++j)
+          if (overlapping(a[i], b[j])) want_cross.push_back({static_cast<int>(i), static_cast<int>(j)});
+      }
+      for (const std::size_t wanted : {1u, 5u, 64u, 100000u}) {
+        const std::string what = std::to_string(na) + " x " + std::to_string(nb) + ", " + std::to_string(wanted);
+        std::vector<std::array<int, 2>> self, cross;
+        for (const auto& task : ta.pair_tasks(ta, wanted))
+          ta.pairs_from(ta, task, [&](int i, int j) { self.push_back({i, j}); });
+        for (const auto& task : ta.pair_tasks(tb, wanted))
+          ta.pairs_from(tb, task, [&](int i, int j) { cross.push_back({i, j}); });
+        std::sort(self.begin(), self.end());  // duplicates kept: each pair must come once
+        std::sort(cross.begin(), cross.end());
+        EXPECT_EQ(self, want_self) << what;
+        EXPECT_EQ(cross, want_cross) << what;
+      }
+    }
 }
 
 }  // namespace

@@ -83,6 +83,45 @@ void BoxTree::set_order(std::vector<std::pair<std::uint64_t, int>>& keys, unsign
   leaf_boxes_.resize(n);
 }
 
+std::vector<BoxTree::NodePair> BoxTree::pair_tasks(const BoxTree& other, std::size_t wanted) const {
+  std::vector<NodePair> tasks;
+  if (order_.empty() || other.order_.empty()) return tasks;
+  const bool self = &other == this;
+  tasks.push_back({1, 1});
+  // Level by level (both nodes of a pair are always at the same depth, or one a leaf), the
+  // children pairs exactly as pairs_from expands them, so the tasks partition its work.
+  while (tasks.size() < wanted) {
+    std::vector<NodePair> next;
+    bool expanded = false;
+    for (const auto& [a, b] : tasks) {
+      if (!overlap(nodes_[a], other.nodes_[b])) continue;
+      const bool leaf_a = a >= first_leaf_, leaf_b = b >= other.first_leaf_;
+      if (leaf_a && leaf_b) {
+        next.push_back({a, b});
+        continue;
+      }
+      expanded = true;
+      if (self && a == b) {
+        next.push_back({2 * a, 2 * a});
+        next.push_back({2 * a, 2 * a + 1});
+        next.push_back({2 * a + 1, 2 * a + 1});
+      } else if (leaf_a) {
+        next.push_back({a, 2 * b});
+        next.push_back({a, 2 * b + 1});
+      } else if (leaf_b) {
+        next.push_back({2 * a, b});
+        next.push_back({2 * a + 1, b});
+      } else {
+        for (int ca = 2 * a; ca <= 2 * a + 1; ++ca)
+          for (int cb = 2 * b; cb <= 2 * b + 1; ++cb) next.push_back({ca, cb});
+      }
+    }
+    tasks.swap(next);
+    if (!expanded) break;
+  }
+  return tasks;
+}
+
 void BoxTree::require_size(std::size_t n) const {
   if (n != order_.size()) throw std::invalid_argument("BoxTree::refit: the number of boxes changed");
 }

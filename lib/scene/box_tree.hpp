@@ -6,13 +6,18 @@
 // array of node boxes, the leaf-ordered primitive boxes and the order: memory linear in the
 // number of primitives, no pointers. refit() keeps the order and recomputes every box.
 //
-// Exactness: a node box is the hull (exact min and max) of the boxes below it, so a query box
-// overlapping a primitive's box overlaps every node box above it, and query() reports exactly
-// the primitives whose boxes overlap the query box (the same closed <= test as overlap()),
-// whatever the order is: the order (and a stale one after refit) only changes the speed.
+// Pairs are found by traversing two trees (or one against itself) together, from the node
+// pairs of pair_tasks() (independent pieces of work): each pair of primitives is met once.
+//
+// Exactness: a node box is the hull (exact min and max) of the boxes below it, so two
+// overlapping primitive boxes make every pair of node boxes above them overlap, and
+// pairs_from() reports exactly the primitive pairs whose boxes overlap (the same closed <= test
+// as overlap()), whatever the order is: the order (and a stale one after refit) only changes
+// the speed.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -56,25 +61,46 @@ class BoxTree {
   /// The number of primitives.
   int size() const { return static_cast<int>(order_.size()); }
 
-  /// Calls report(i) for every primitive i whose box overlaps `query` (closed boxes, exact),
-  /// in tree order (not sorted).
+  /// A pair of nodes still to be compared by a pair traversal (self_pairs, pairs_with): node
+  /// indices of the first and of the second tree.
+  using NodePair = std::array<int, 2>;
+
+  /// The node pairs from which a traversal of this tree against `other` (or against itself,
+  /// `other` == this) covers every overlapping pair of primitives, at least `wanted` of them
+  /// when the trees are deep enough (the roots expanded level by level, disjoint pairs
+  /// dropped): independent pieces of work for pairs_from().
+  std::vector<NodePair> pair_tasks(const BoxTree& other, std::size_t wanted) const;
+
+  /// Calls report(i, j) for every primitive i of this tree and j of `other` whose boxes overlap
+  /// (closed boxes, exact) and which lie below the node pair `task` (from pair_tasks(other));
+  /// when `other` is this tree, every unordered pair i != j once, as (min, max). Each pair of
+  /// the trees is below exactly one task of pair_tasks, so the tasks together report each
+  /// overlapping pair exactly once (in no particular order).
   template <class Report>
-  void query(const Box& query, Report&& report) const {
-    if (order_.empty()) return;
-    int stack[64];  // depth <= 30 (at most 2^31 / kLeafSize leaves), one sibling pending per level
+  void pairs_from(const BoxTree& other, NodePair task, Report&& report) const {
+    const bool self = &other == this;
+    NodePair stack[kPairStack];
     int top = 0;
-    stack[top++] = 1;
+    stack[top++] = task;
     while (top > 0) {
-      const int node = stack[--top];
-      if (!overlap(nodes_[node], query)) continue;
-      if (node >= first_leaf_) {
-        const int begin = (node - first_leaf_) * kLeafSize;
-        const int end = std::min(begin + kLeafSize, size());
-        for (int k = begin; k < end; ++k)
-          if (overlap(leaf_boxes_[k], query)) report(order_[k]);
+      const auto [a, b] = stack[--top];
+      if (!overlap(nodes_[a], other.nodes_[b])) continue;
+      const bool leaf_a = a >= first_leaf_, leaf_b = b >= other.first_leaf_;
+      if (leaf_a && leaf_b) {
+        leaf_pairs(other, a, b, self, report);
+      } else if (self && a == b) {  // same depth: both internal
+        stack[top++] = {2 * a, 2 * a};
+        stack[top++] = {2 * a, 2 * a + 1};
+        stack[top++] = {2 * a + 1, 2 * a + 1};
+      } else if (leaf_a) {
+        stack[top++] = {a, 2 * b};
+        stack[top++] = {a, 2 * b + 1};
+      } else if (leaf_b) {
+        stack[top++] = {2 * a, b};
+        stack[top++] = {2 * a + 1, b};
       } else {
-        stack[top++] = 2 * node + 1;
-        stack[top++] = 2 * node;
+        for (int ca = 2 * a; ca <= 2 * a + 1; ++ca)
+          for (int cb = 2 * b; cb <= 2 * b + 1; ++cb) stack[top++] = {ca, cb};
       }
     }
   }
@@ -82,6 +108,40 @@ class BoxTree {
  private:
   /// Indices per piece of parallel work.
   static constexpr std::size_t kGrain = 1 << 12;
+  /// Pending node pairs of pairs_from: each step pops one pair and pushes at most 4, and lowers
+  /// the depth of one of them (at most 2 x 30 levels below the task), so at most 3 x 60 + 1
+  /// are pending.
+  static constexpr int kPairStack = 192;
+
+  /// The overlapping primitive pairs of leaf node a of this tree and leaf node b of `other`
+  /// (self: same tree, each unordered pair once as (min, max), none with itself).
+  template <class Report>
+  void leaf_pairs(const BoxTree& other, int a, int b, bool self, Report& report) const {
+    const int begin_a = (a - first_leaf_) * kLeafSize, end_a = std::min(begin_a + kLeafSize, size());
+    const int begin_b = (b - other.first_leaf_) * kLeafSize, end_b = std::min(begin_b + kLeafSize, other.size());
+    // Only the boxes of each leaf that overlap the other leaf's box can be in a pair (it is the
+    // hull of that leaf's boxes): the pairs are tested among those.
+    int rows[kLeafSize], cols[kLeafSize], n_rows = 0, n_cols = 0;
+    for (int k = begin_a; k < end_a; ++k)
+      if (overlap(leaf_boxes_[k], other.nodes_[b])) rows[n_rows++] = k;
+    for (int l = begin_b; l < end_b; ++l)
+      if (overlap(other.leaf_boxes_[l], nodes_[a])) cols[n_cols++] = l;
+    for (int r = 0; r < n_rows; ++r) {
+      const int k = rows[r];
+      const Box& box = leaf_boxes_[k];
+      const int i = order_[k];
+      for (int c = 0; c < n_cols; ++c) {
+        const int l = cols[c];
+        if (self && a == b && l <= k) continue;
+        if (!overlap(box, other.leaf_boxes_[l])) continue;
+        const int j = other.order_[l];
+        if (self)
+          report(std::min(i, j), std::max(i, j));
+        else
+          report(i, j);
+      }
+    }
+  }
 
   /// The bounding box of the finite box centres, quantised to 21 bits per axis.
   struct MortonFrame {

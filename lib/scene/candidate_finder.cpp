@@ -10,32 +10,37 @@
 namespace exactccd::scene {
 namespace {
 
-/// Query items per chunk of work.
-constexpr std::size_t kChunk = 256;
+/// Pieces of work per thread of a pair traversal (some cost far more than others).
+constexpr std::size_t kTasksPerThread = 32;
 
-/// The pairs of items 0..n-1: emit(i, out) appends item i's pairs to `out`, sorted, each item's
-/// first index increasing with i; the chunks' outputs are joined in chunk order, so the result
-/// is sorted whatever thread ran which chunk.
-template <class Emit>
-std::vector<std::array<int, 2>> gather(std::size_t n, unsigned threads, Emit&& emit) {
-  // Each chunk's pairs are found in its worker's scratch list and stored at their exact size,
-  // so the chunks hold no spare capacity.
-  std::vector<std::vector<std::array<int, 2>>> chunks((n + kChunk - 1) / kChunk), scratch(threads);
-  parallel_chunks(n, threads, kChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
-    std::vector<std::array<int, 2>>& out = scratch[w];
-    out.clear();
-    for (std::size_t i = begin; i < end; ++i) emit(i, out);
-    chunks[begin / kChunk].assign(out.begin(), out.end());
+/// Every overlapping pair of primitives of trees a and b (or of a with itself, b == &a) that
+/// keep(i, j) accepts, as make(i, j), sorted ascending. The traversal finds each pair once
+/// (BoxTree::pairs_from); on up to `threads` threads, each worker's pairs in a list of its own,
+/// sorted there, then merged: the result does not depend on the threads.
+template <class Keep, class Make>
+std::vector<std::array<int, 2>> tree_pairs(const BoxTree& a, const BoxTree& b, unsigned threads, Keep&& keep,
+                                           Make&& make) {
+  const std::vector<BoxTree::NodePair> tasks = a.pair_tasks(b, threads > 1 ? kTasksPerThread * threads : 1);
+  std::vector<std::vector<std::array<int, 2>>> found(std::max(1u, threads));
+  const unsigned workers = parallel_chunks(tasks.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned w) {
+    std::vector<std::array<int, 2>>& out = found[w];
+    for (std::size_t k = begin; k < end; ++k)
+      a.pairs_from(b, tasks[k], [&](int i, int j) {
+        if (keep(i, j)) out.push_back(make(i, j));
+      });
     return true;
   });
-  std::vector<std::vector<std::array<int, 2>>>().swap(scratch);
-  std::size_t total = 0;
-  for (const auto& c : chunks) total += c.size();
-  std::vector<std::array<int, 2>> all;
-  all.reserve(total);
-  for (auto& c : chunks) {
-    all.insert(all.end(), c.begin(), c.end());
-    std::vector<std::array<int, 2>>().swap(c);  // freed as it is copied
+  found.resize(std::min<std::size_t>(found.size(), workers));
+  parallel_chunks(found.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t w = begin; w < end; ++w) std::sort(found[w].begin(), found[w].end());
+    return true;
+  });
+  std::vector<std::array<int, 2>> all = std::move(found[0]);
+  for (std::size_t w = 1; w < found.size(); ++w) {
+    std::vector<std::array<int, 2>> merged(all.size() + found[w].size());
+    std::merge(all.begin(), all.end(), found[w].begin(), found[w].end(), merged.begin());
+    std::vector<std::array<int, 2>>().swap(found[w]);
+    all.swap(merged);
   }
   return all;
 }
@@ -62,12 +67,15 @@ void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   const auto triangle = [&](std::size_t t) { return triangle_box(t); };
   const auto edge = [&](std::size_t e) { return edge_box(e); };
   const auto point = [&](std::size_t i) { return point_box(i); };
+  const auto vertex = [&](std::size_t i) { return vertex_boxes_[static_cast<std::size_t>(vertices_[i])]; };
   if (!built_) {
+    vertex_tree_.build(triangles_.empty() ? 0 : vertices_.size(), vertex, threads);
     triangle_tree_.build(triangles_.size(), triangle, threads);
     edge_tree_.build(edges_.size(), edge, threads);
     point_tree_.build(points_.size(), point, threads);
     built_ = true;
   } else {
+    vertex_tree_.refit(triangles_.empty() ? 0 : vertices_.size(), vertex, threads);
     triangle_tree_.refit(triangles_.size(), triangle, threads);
     edge_tree_.refit(edges_.size(), edge, threads);
     point_tree_.refit(points_.size(), point, threads);
@@ -76,44 +84,33 @@ void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
 
 Candidates BroadPhaseTrees::candidates(unsigned threads) const {
   if (!built_) throw std::logic_error("BroadPhaseTrees::candidates before fit");
-  const auto sorted_tail = [](std::vector<std::array<int, 2>>& out, std::size_t from) {
-    std::sort(out.begin() + static_cast<std::ptrdiff_t>(from), out.end());
-  };
+  const auto any = [](int, int) { return true; };
   Candidates c;
   if (!triangles_.empty())
-    c.vertex_face = gather(vertices_.size(), threads, [&](std::size_t i, std::vector<std::array<int, 2>>& out) {
-      const int v = vertices_[i];
-      const std::size_t from = out.size();
-      triangle_tree_.query(vertex_boxes_[v], [&](int t) {
-        const Triangle& tri = triangles_[t];
-        if (tri[0] != v && tri[1] != v && tri[2] != v) out.push_back({v, t});
-      });
-      sorted_tail(out, from);
-    });
-  c.edge_edge = gather(edges_.size(), threads, [&](std::size_t i, std::vector<std::array<int, 2>>& out) {
-    const Edge& a = edges_[i];
-    const std::size_t from = out.size();
-    edge_tree_.query(edge_box(i), [&](int j) {
-      const Edge& b = edges_[j];
-      if (j > static_cast<int>(i) && a[0] != b[0] && a[0] != b[1] && a[1] != b[0] && a[1] != b[1])
-        out.push_back({static_cast<int>(i), j});
-    });
-    sorted_tail(out, from);
-  });
+    c.vertex_face = tree_pairs(
+        vertex_tree_, triangle_tree_, threads,
+        [&](int i, int t) {
+          const int v = vertices_[static_cast<std::size_t>(i)];
+          const Triangle& tri = triangles_[static_cast<std::size_t>(t)];
+          return tri[0] != v && tri[1] != v && tri[2] != v;
+        },
+        [&](int i, int t) { return std::array<int, 2>{vertices_[static_cast<std::size_t>(i)], t}; });
+  c.edge_edge = tree_pairs(
+      edge_tree_, edge_tree_, threads,
+      [&](int i, int j) {
+        const Edge& a = edges_[static_cast<std::size_t>(i)];
+        const Edge& b = edges_[static_cast<std::size_t>(j)];
+        return a[0] != b[0] && a[0] != b[1] && a[1] != b[0] && a[1] != b[1];
+      },
+      [](int i, int j) { return std::array<int, 2>{i, j}; });  // i < j
   if (!points_.empty()) {
-    // Isolated points are on no edge and distinct: no pair shares a vertex.
-    c.point_edge = gather(points_.size(), threads, [&](std::size_t i, std::vector<std::array<int, 2>>& out) {
-      const std::size_t from = out.size();
-      edge_tree_.query(point_box(i), [&](int e) { out.push_back({points_[i], e}); });
-      sorted_tail(out, from);
-    });
-    c.point_point = gather(points_.size(), threads, [&](std::size_t i, std::vector<std::array<int, 2>>& out) {
-      const std::size_t from = out.size();
-      point_tree_.query(point_box(i), [&](int j) {
-        if (j > static_cast<int>(i)) out.push_back({points_[i], points_[j]});  // points ascending
-      });
-      sorted_tail(out, from);
-    });
+    // Isolated points are on no edge and distinct: no pair shares a vertex. Points ascending,
+    // so {points_[i], points_[j]} with i < j is ascending too.
+    const auto point_of = [&](int i) { return points_[static_cast<std::size_t>(i)]; };
+    c.point_edge = tree_pairs(point_tree_, edge_tree_, threads, any,
+                              [&](int i, int e) { return std::array<int, 2>{point_of(i), e}; });
+    c.point_point = tree_pairs(point_tree_, point_tree_, threads, any,
+                               [&](int i, int j) { return std::array<int, 2>{point_of(i), point_of(j)}; });
   }
   return c;
 }

@@ -24,8 +24,9 @@ class BroadPhaseTrees {
   void fit(std::vector<Box> vertex_boxes, unsigned threads);
 
   /// Every pair of find_candidates() for the boxes of the last fit(): the pairs whose boxes
-  /// overlap (closed, exact) and which share no vertex; sorted, without duplicates. Up to
-  /// `threads` threads; the result does not depend on them.
+  /// overlap (closed, exact) and which share no vertex; sorted, without duplicates. Each pair
+  /// is found once by a traversal of two trees (or of one against itself). Up to `threads`
+  /// threads; the result does not depend on them.
   Candidates candidates(unsigned threads) const;
 
  private:
@@ -39,7 +40,8 @@ class BroadPhaseTrees {
   Box triangle_box(std::size_t t) const;
   Box edge_box(std::size_t e) const;
   Box point_box(std::size_t i) const { return vertex_boxes_[static_cast<std::size_t>(points_[i])]; }
-  BoxTree triangle_tree_, edge_tree_, point_tree_;
+  /// vertex_tree_: over `vertices` (empty without triangles), for the vertex-face pairs.
+  BoxTree vertex_tree_, triangle_tree_, edge_tree_, point_tree_;
   bool built_ = false;
 };
 
