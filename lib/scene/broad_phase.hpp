@@ -54,10 +54,14 @@ Box swept_box(const MovingMesh& mesh, const int* vertices, int count);
 Box swept_box(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
               const int* vertices, int count);
 
-/// Whether two closed boxes overlap (exact). Inline: the broad phase's innermost test.
+/// Whether two closed boxes overlap (exact). Inline: the broad phase's innermost test. The six
+/// comparisons are combined with | rather than || (the same value, no short circuit): the
+/// outcome of each is hard to predict in tree traversals, and branches on them cost more than
+/// evaluating all six.
 inline bool overlap(const Box& a, const Box& b) {
-  return !(a.hi[0] < b.lo[0] || b.hi[0] < a.lo[0] || a.hi[1] < b.lo[1] || b.hi[1] < a.lo[1] || a.hi[2] < b.lo[2] ||
-           b.hi[2] < a.lo[2]);
+  const auto apart = [](double hi, double lo) { return static_cast<int>(hi < lo); };
+  return (apart(a.hi[0], b.lo[0]) | apart(b.hi[0], a.lo[0]) | apart(a.hi[1], b.lo[1]) | apart(b.hi[1], a.lo[1]) |
+          apart(a.hi[2], b.lo[2]) | apart(b.hi[2], a.lo[2])) == 0;
 }
 
 /// All candidate pairs whose swept boxes overlap (sort-and-sweep along the axis of largest
