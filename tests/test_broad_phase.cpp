@@ -2,8 +2,10 @@
 // the reusable exactccd::SceneBroadPhase: exactly the candidates of the serial sort-and-sweep it
 // replaced (sweep_candidates) and of brute force over all pairs, at 1, 2, 3 and 8 threads, on
 // random, degenerate and procedural scenes, d = 0 and d > 0, tmax = 1 and < 1; a refitted
-// SceneBroadPhase gives what a new one gives; the scene functions give what the per-pair
-// functions give over the reference candidates, at every thread count.
+// SceneBroadPhase gives what a new one gives; BoxTree's pair traversal (of a tree against
+// itself and against another) reports every overlapping pair once, against brute force; the
+// scene functions give what the per-pair functions give over the reference candidates, at every
+// thread count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
