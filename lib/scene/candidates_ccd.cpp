@@ -191,10 +191,7 @@ std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, 
 
 std::optional<TimeInterval> earliest_toi(const std::vector<CandidateCollision>& collisions) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  std::optional<TimeInterval> best;
-  for (const CandidateCollision& c : collisions)
-    if (!best || scene::earlier(c.toi, *best)) best = c.toi;
-  return best;
+  return scene::earliest_of(collisions);
 }
 
 bool is_collision_free(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,

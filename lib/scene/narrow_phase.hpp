@@ -144,6 +144,16 @@ inline bool earlier(const TimeInterval& a, const TimeInterval& b) {
 
 /// Every colliding candidate of the range with its time of impact, as {k, toi}, ascending in k,
 /// on `threads` threads (the result does not depend on their number).
+/// The earliest TOI (in the order `earlier`) of found collisions (anything with a `toi`
+/// member), or none: the scene's and the batch call's earliest_toi(collisions).
+template <class Collision>
+std::optional<TimeInterval> earliest_of(const std::vector<Collision>& collisions) {
+  std::optional<TimeInterval> best;
+  for (const Collision& c : collisions)
+    if (!best || earlier(c.toi, *best)) best = c.toi;
+  return best;
+}
+
 template <class Point, class Range>
 std::vector<std::pair<std::size_t, TimeInterval>> colliding_pairs(const Range& range, const PairTests<Point>& tests,
                                                                   unsigned threads) {

@@ -152,10 +152,7 @@ std::vector<Collision> find_collisions(const Scene2d& scene, const SceneOptions&
 
 std::optional<TimeInterval> earliest_toi(const std::vector<Collision>& collisions) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  std::optional<TimeInterval> best;
-  for (const Collision& c : collisions)
-    if (!best || scene::earlier(c.toi, *best)) best = c.toi;
-  return best;
+  return scene::earliest_of(collisions);
 }
 
 std::optional<TimeInterval> earliest_toi(const Scene& scene, const SceneOptions& options) {
