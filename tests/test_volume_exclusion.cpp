@@ -2,7 +2,8 @@
 // used by the scene's time bound) against exact rational arithmetic: wherever the filter gives a
 // value and an error bound, the exact coefficient lies strictly within it, and the signs agree
 // with certified_group_sign's. On bundled data, wide-exponent families (where a constant
-// absolute underflow term once failed) and random near-degenerate queries.
+// absolute underflow term once failed) and random near-degenerate queries. Also stage 1's
+// three verdicts (volume_exclusion) against exact signs and under exact scalings.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
+#include "filter/normalize.hpp"
 #include "filter/volume_exclusion.hpp"
 #include "fuzz/families.hpp"
 #include "io/benchmark_csv.hpp"
@@ -115,6 +117,68 @@ TEST(CertifiedVolumeBernstein, EnclosesTheExactCoefficientsOnRandomQueries) {
     check(r, "random #" + std::to_string(n), tally);
   }
   EXPECT_GT(tally.certified, 1000u);
+}
+
+/// The exact Bernstein coefficients (times C(3, m)) of V for rows r (V = det[r1 - r0, r2 - r0,
+/// r3 - r0]).
+std::array<mpq_class, 4> exact_bernstein(const Rows& r) {
+  QVec u[2], v[2], w[2];
+  for (int t = 0; t < 2; ++t) {
+    u[t] = exact_difference(r[1 + 4 * t], r[4 * t]);
+    v[t] = exact_difference(r[2 + 4 * t], r[4 * t]);
+    w[t] = exact_difference(r[3 + 4 * t], r[4 * t]);
+  }
+  return {det(u[0], v[0], w[0]), det(u[1], v[0], w[0]) + det(u[0], v[1], w[0]) + det(u[0], v[0], w[1]),
+          det(u[1], v[1], w[0]) + det(u[1], v[0], w[1]) + det(u[0], v[1], w[1]), det(u[1], v[1], w[1])};
+}
+
+filter::Exclusion exclusion_of(const Rows& r) {
+  return filter::volume_exclusion(from_rows<EdgeEdgeQuery>(r));  // edge-edge: V = det[r1 - r0, ...]
+}
+
+Rows scaled(const Rows& r, int s) {
+  Rows out = r;
+  for (Vec3& p : out) p = {std::ldexp(p.x, s), std::ldexp(p.y, s), std::ldexp(p.z, s)};
+  return out;
+}
+
+// excluded only when the exact Bernstein coefficients all have one strict sign (a sufficient
+// condition for V != 0 on [0, 1]); a scaling by a power of two that keeps every value normal
+// leaves the verdict unchanged (what lets the filtered method retry only after out_of_range);
+// tiny queries are out_of_range, and excluded once scaled towards 1 when their unit-size
+// original is.
+TEST(VolumeExclusion, VerdictsAgreeWithExactSignsAndAreScaleInvariantInRange) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t verdicts[3] = {0, 0, 0};
+  for (int n = 0; n < 4000; ++n) {
+    Rows r;
+    for (Vec3& p : r) p = {unit(rng), unit(rng), unit(rng)};
+    if (n % 2 == 0) r[7] = r[3];  // nearer-degenerate volumes: more not_proven verdicts
+    if (n % 4 == 1)                // nearly coplanar at t = 0: the fourth point near the plane
+      r[3] = {r[0].x + r[1].x - r[2].x, r[0].y + r[1].y - r[2].y, r[0].z + r[1].z - r[2].z};
+    const filter::Exclusion e = exclusion_of(r);
+    ++verdicts[static_cast<int>(e)];
+    const auto beta = exact_bernstein(r);
+    if (e == filter::Exclusion::excluded) {
+      const int s = sgn(beta[0]);
+      for (const mpq_class& b : beta) EXPECT_EQ(sgn(b), s) << "query " << n << ": excluded with mixed signs";
+      EXPECT_NE(s, 0) << "query " << n;
+    }
+    EXPECT_NE(e, filter::Exclusion::out_of_range) << "query " << n << " is of unit size";
+    for (int k : {-300, -37, -1, 1, 5, 200})
+      EXPECT_EQ(exclusion_of(scaled(r, k)), e) << "query " << n << " scaled by 2^" << k;
+    const Rows tiny = scaled(r, -1000);
+    EXPECT_EQ(exclusion_of(tiny), filter::Exclusion::out_of_range) << "query " << n;
+    if (e == filter::Exclusion::excluded) {
+      bool was_scaled = false;
+      const EdgeEdgeQuery unit_query = filter::scaled_to_unit(from_rows<EdgeEdgeQuery>(tiny), was_scaled);
+      EXPECT_TRUE(was_scaled);
+      EXPECT_TRUE(filter::volume_excluded(unit_query)) << "query " << n;
+    }
+  }
+  EXPECT_GT(verdicts[static_cast<int>(filter::Exclusion::excluded)], 500u);
+  EXPECT_GT(verdicts[static_cast<int>(filter::Exclusion::not_proven)], 500u);
 }
 
 }  // namespace

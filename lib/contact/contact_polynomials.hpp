@@ -1,14 +1,22 @@
 // The named polynomials in t whose signs decide contact (docs/design.md, "The contact rule").
 //
-// Written once, templated on the coefficient type NT: mpq_class or mpz_class on the exact
-// paths, CGAL::Interval_nt in the interval filter, double in the naive baseline. Each
-// polynomial is built on first use and cached: the rule usually needs only a few of them
+// Written once per kind (VertexFaceTerms, EdgeEdgeTerms), templated on a Motion that gives the
+// relative motion of two points of the query:
+// - PolynomialMotion<NT>: linear polynomials in t with coefficients NT (mpq_class or mpz_class on
+//   the exact paths, CGAL::Interval_nt in the interval filter, double in the naive baseline);
+//   every term is then a polynomial (VertexFacePolys<NT>, EdgeEdgePolys<NT>);
+// - a motion evaluated over one time interval T (the interval filter's MotionOver,
+//   filter/interval_values.hpp): every term is then an interval enclosing the polynomial's
+//   values over T, from the same formulas, without building the polynomials.
+// Each term is built on first use and cached: the rule usually needs only a few of them
 // (a proper triangle never asks for its edges' segment tests), and on the exact paths every
-// multiplication costs a GMP call. A polynomial set belongs to one query and one thread.
+// multiplication costs a GMP call. A term set belongs to one query and one thread.
 #pragma once
 
 #include <array>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 #include "contact/polynomial.hpp"
 #include "contact/vec3_ops.hpp"
@@ -20,14 +28,18 @@ namespace exactccd::contact {
 template <class NT, int D>
 using PolyVec3 = Vec3T<Poly<NT, D>>;
 
-/// Polynomials deciding "q(t) lies on the closed segment [u(t), v(t)]":
+/// Terms deciding "q(t) lies on the closed segment [u(t), v(t)]":
 /// cross = (q - u) x (v - u) vanishes (q on the line, or u == v), and
 /// dot = (q - u) . (v - q) >= 0 (q between u and v; with u == v it forces q == u).
-template <class NT>
-struct PointOnSegmentPolys {
-  PolyVec3<NT, 2> cross;
-  Poly<NT, 2> dot;
+template <class Vector, class Scalar>
+struct PointOnSegment {
+  Vector cross;
+  Scalar dot;
 };
+
+/// The point-on-segment polynomials.
+template <class NT>
+using PointOnSegmentPolys = PointOnSegment<PolyVec3<NT, 2>, Poly<NT, 2>>;
 
 /// The motion of the vector from point `from` to point `to` (rows of a query: the point at t0,
 /// and at t1 four rows later): (to - from)(t) = d0 + t (d1 - d0) with d0, d1 the differences
@@ -44,11 +56,36 @@ PolyVec3<NT, 1> relative_motion(const std::array<Vec3T<NT>, 8>& rows, int from, 
 }
 
 /// "q on [u, v]" from the relative motions u -> q, u -> v and q -> v.
-template <class NT>
-PointOnSegmentPolys<NT> point_on_segment_polys(const PolyVec3<NT, 1>& uq, const PolyVec3<NT, 1>& uv,
-                                               const PolyVec3<NT, 1>& qv) {
-  return {cross(uq, uv), dot(uq, qv)};
+template <class Vector>
+auto point_on_segment_terms(const Vector& uq, const Vector& uv, const Vector& qv) {
+  return PointOnSegment<decltype(cross(uq, uv)), decltype(dot(uq, qv))>{cross(uq, uv), dot(uq, qv)};
 }
+
+/// The relative motions of a query's points as linear polynomials in t.
+template <class NT>
+class PolynomialMotion {
+ public:
+  explicit PolynomialMotion(const std::array<Vec3T<NT>, 8>& rows) : rows_(rows) {}
+  /// The motion of the vector from row `from` to row `to` (relative_motion).
+  PolyVec3<NT, 1> rel(int from, int to) const { return relative_motion(rows_, from, to); }
+  /// The query's rows (t0 rows, then t1 rows).
+  const std::array<Vec3T<NT>, 8>& rows() const { return rows_; }
+
+ private:
+  std::array<Vec3T<NT>, 8> rows_;
+};
+
+/// The types of the terms built from a Motion's relative motions (degree 1 for polynomials):
+/// vectors of degree 2 (cross products), scalars of degree 2, 3 and 4.
+template <class Motion>
+struct TermTypes {
+  using Vector1 = std::decay_t<decltype(std::declval<const Motion&>().rel(0, 1))>;
+  using Vector2 = decltype(cross(std::declval<const Vector1&>(), std::declval<const Vector1&>()));
+  using Scalar2 = decltype(dot(std::declval<const Vector1&>(), std::declval<const Vector1&>()));
+  using Scalar3 = decltype(dot(std::declval<const Vector1&>(), std::declval<const Vector2&>()));
+  using Scalar4 = decltype(dot(std::declval<const Vector2&>(), std::declval<const Vector2&>()));
+  using OnSegment = PointOnSegment<Vector2, Scalar2>;
+};
 
 /// Returns the cached value, computing it with make() on first use.
 template <class T, class Make>
@@ -57,35 +94,42 @@ const T& cached(std::optional<T>& slot, Make&& make) {
   return *slot;
 }
 
-/// Vertex-face polynomials of p against triangle (a, b, c).
-template <class NT>
-class VertexFacePolys {
+/// Vertex-face terms of p against triangle (a, b, c), built from a Motion (file comment).
+template <class Motion>
+class VertexFaceTerms {
+  using Types = TermTypes<Motion>;
+
  public:
-  explicit VertexFacePolys(const VertexFaceQueryT<NT>& q) : rows_(rows(q)) {}
+  explicit VertexFaceTerms(Motion motion) : motion_(std::move(motion)) {}
+  /// With the motion constructed in place from `args`.
+  template <class... Args>
+  explicit VertexFaceTerms(std::in_place_t, Args&&... args) : motion_(std::forward<Args>(args)...) {}
 
   /// V = (b - a) . ((c - a) x (p - a)): zero iff the four points are coplanar.
-  const Poly<NT, 3>& volume() const {
+  const typename Types::Scalar3& volume() const {
     return cached(volume_, [&] { return dot(rel(kA, kB), cross(rel(kA, kC), rel(kA, kP))); });
   }
   /// n = (b - a) x (c - a): zero iff the triangle is degenerate.
-  const PolyVec3<NT, 2>& normal() const {
+  const typename Types::Vector2& normal() const {
     return cached(normal_, [&] { return cross(rel(kA, kB), rel(kA, kC)); });
   }
   /// n . (e_i x (p - v_i)) for the edges (a, b), (b, c), (c, a): |n|^2 times the barycentric
   /// coordinate of p opposite the edge, when p is in the plane.
-  const Poly<NT, 4>& barycentric(int i) const {
+  const typename Types::Scalar4& barycentric(int i) const {
     return cached(barycentric_[i], [&] {
       const auto [u, v] = edge(i);
       return dot(normal(), cross(rel(u, v), rel(u, kP)));
     });
   }
-  /// "p on the closed edge i" (see PointOnSegmentPolys).
-  const PointOnSegmentPolys<NT>& on_edge(int i) const {
+  /// "p on the closed edge i" (see PointOnSegment).
+  const typename Types::OnSegment& on_edge(int i) const {
     return cached(on_edge_[i], [&] {
       const auto [u, v] = edge(i);
-      return point_on_segment_polys(rel(u, kP), rel(u, v), rel(kP, v));
+      return point_on_segment_terms(rel(u, kP), rel(u, v), rel(kP, v));
     });
   }
+  /// The motion the terms are built from.
+  const Motion& motion() const { return motion_; }
 
  private:
   static constexpr int kP = 0, kA = 1, kB = 2, kC = 3;  // rows at t0 (t1: four rows later)
@@ -94,63 +138,86 @@ class VertexFacePolys {
     if (i == 1) return {kB, kC};
     return {kC, kA};
   }
-  PolyVec3<NT, 1> rel(int from, int to) const { return relative_motion(rows_, from, to); }
+  decltype(auto) rel(int from, int to) const { return motion_.rel(from, to); }
 
-  std::array<Vec3T<NT>, 8> rows_;
-  mutable std::optional<Poly<NT, 3>> volume_;
-  mutable std::optional<PolyVec3<NT, 2>> normal_;
-  mutable std::array<std::optional<Poly<NT, 4>>, 3> barycentric_;
-  mutable std::array<std::optional<PointOnSegmentPolys<NT>>, 3> on_edge_;
+  Motion motion_;
+  mutable std::optional<typename Types::Scalar3> volume_;
+  mutable std::optional<typename Types::Vector2> normal_;
+  mutable std::array<std::optional<typename Types::Scalar4>, 3> barycentric_;
+  mutable std::array<std::optional<typename Types::OnSegment>, 3> on_edge_;
 };
 
-/// Edge-edge polynomials of segment (a0, a1) against segment (b0, b1).
+/// Vertex-face polynomials of p against triangle (a, b, c).
+template <class NT>
+class VertexFacePolys : public VertexFaceTerms<PolynomialMotion<NT>> {
+ public:
+  explicit VertexFacePolys(const VertexFaceQueryT<NT>& q)
+      : VertexFaceTerms<PolynomialMotion<NT>>(PolynomialMotion<NT>(rows(q))) {}
+};
+
+/// Edge-edge terms of segment (a0, a1) against segment (b0, b1), built from a Motion.
 /// With da = a1 - a0, db = b1 - b0, r = b0 - a0, w = da x db, D = w . w, the coplanar lines
 /// meet at a0 + (U / D) da = b0 + (W / D) db where U = (r x db) . w and W = (r x da) . w.
-template <class NT>
-class EdgeEdgePolys {
+template <class Motion>
+class EdgeEdgeTerms {
+  using Types = TermTypes<Motion>;
+
  public:
-  explicit EdgeEdgePolys(const EdgeEdgeQueryT<NT>& q) : rows_(rows(q)) {}
+  explicit EdgeEdgeTerms(Motion motion) : motion_(std::move(motion)) {}
+  /// With the motion constructed in place from `args`.
+  template <class... Args>
+  explicit EdgeEdgeTerms(std::in_place_t, Args&&... args) : motion_(std::forward<Args>(args)...) {}
 
   /// V = (a1 - a0) . ((b0 - a0) x (b1 - a0)): zero iff the four points are coplanar.
-  const Poly<NT, 3>& volume() const {
+  const typename Types::Scalar3& volume() const {
     return cached(volume_, [&] { return dot(rel(kA0, kA1), cross(rel(kA0, kB0), rel(kA0, kB1))); });
   }
   /// w = da x db: zero iff the edges are parallel or one has zero length.
-  const PolyVec3<NT, 2>& direction_cross() const {
+  const typename Types::Vector2& direction_cross() const {
     return cached(direction_cross_, [&] { return cross(rel(kA0, kA1), rel(kB0, kB1)); });
   }
   /// U, D - U, W, D - W for i = 0..3: all >= 0 iff alpha = U / D and beta = W / D are in [0, 1].
-  const Poly<NT, 4>& parameter(int i) const {
+  const typename Types::Scalar4& parameter(int i) const {
     return cached(parameter_[i], [&] {
       // U (i < 2) or W (i >= 2), each built once and shared by its pair.
-      const Poly<NT, 4>& numerator = cached(numerator_[i / 2], [&] {
+      const auto& numerator = cached(numerator_[i / 2], [&] {
         return dot(cross(rel(kA0, kB0), i < 2 ? rel(kB0, kB1) : rel(kA0, kA1)), direction_cross());
       });
       if (i % 2 == 0) return numerator;
-      const Poly<NT, 4>& d = cached(squared_norm_, [&] { return dot(direction_cross(), direction_cross()); });
-      return d - numerator;
+      const auto& d = cached(squared_norm_, [&] { return dot(direction_cross(), direction_cross()); });
+      return typename Types::Scalar4(d - numerator);
     });
   }
   /// a0 on edge b, a1 on edge b, b0 on edge a, b1 on edge a, for i = 0..3.
-  const PointOnSegmentPolys<NT>& endpoint_on_edge(int i) const {
+  const typename Types::OnSegment& endpoint_on_edge(int i) const {
     return cached(endpoint_on_edge_[i], [&] {
       // The point q = row i against the other edge [u, v].
       const int q = i, u = i < 2 ? kB0 : kA0, v = i < 2 ? kB1 : kA1;
-      return point_on_segment_polys(rel(u, q), rel(u, v), rel(q, v));
+      return point_on_segment_terms(rel(u, q), rel(u, v), rel(q, v));
     });
   }
+  /// The motion the terms are built from.
+  const Motion& motion() const { return motion_; }
 
  private:
   static constexpr int kA0 = 0, kA1 = 1, kB0 = 2, kB1 = 3;  // rows at t0 (t1: four rows later)
-  PolyVec3<NT, 1> rel(int from, int to) const { return relative_motion(rows_, from, to); }
+  decltype(auto) rel(int from, int to) const { return motion_.rel(from, to); }
 
-  std::array<Vec3T<NT>, 8> rows_;
-  mutable std::optional<Poly<NT, 3>> volume_;
-  mutable std::optional<PolyVec3<NT, 2>> direction_cross_;
-  mutable std::array<std::optional<Poly<NT, 4>>, 2> numerator_;  // U, W
-  mutable std::optional<Poly<NT, 4>> squared_norm_;               // D = w . w
-  mutable std::array<std::optional<Poly<NT, 4>>, 4> parameter_;
-  mutable std::array<std::optional<PointOnSegmentPolys<NT>>, 4> endpoint_on_edge_;
+  Motion motion_;
+  mutable std::optional<typename Types::Scalar3> volume_;
+  mutable std::optional<typename Types::Vector2> direction_cross_;
+  mutable std::array<std::optional<typename Types::Scalar4>, 2> numerator_;  // U, W
+  mutable std::optional<typename Types::Scalar4> squared_norm_;               // D = w . w
+  mutable std::array<std::optional<typename Types::Scalar4>, 4> parameter_;
+  mutable std::array<std::optional<typename Types::OnSegment>, 4> endpoint_on_edge_;
+};
+
+/// Edge-edge polynomials of segment (a0, a1) against segment (b0, b1).
+template <class NT>
+class EdgeEdgePolys : public EdgeEdgeTerms<PolynomialMotion<NT>> {
+ public:
+  explicit EdgeEdgePolys(const EdgeEdgeQueryT<NT>& q)
+      : EdgeEdgeTerms<PolynomialMotion<NT>>(PolynomialMotion<NT>(rows(q))) {}
 };
 
 /// The polynomial set of a query, chosen by overload.

@@ -27,15 +27,18 @@ std::optional<TimeInterval> answer(const StageResult& r) {
 /// a collision is returned as the placeholder interval [0, 0] (only its presence matters).
 template <class Query>
 std::optional<TimeInterval> through_stages(const Query& input, bool want_toi, StageCounters* counters) {
-  if (volume_excluded(input)) {
+  const Exclusion exclusion = volume_exclusion(input);
+  if (exclusion == Exclusion::excluded) {
     count(counters, &StageCounters::volume_exclusion);
     return std::nullopt;
   }
   // Past the hot path: bring the scene's magnitude near 1 (exactly) so that huge or tiny
-  // coordinates do not overflow or underflow the filters; answers are unchanged.
+  // coordinates do not overflow or underflow the filters; answers are unchanged. Stage 1 is
+  // retried only where its range limits stopped it (volume_exclusion: else the scaled query's
+  // rounded values are the same up to a power of two).
   bool scaled = false;
   const Query q = scaled_to_unit(input, scaled);
-  if (scaled && volume_excluded(q)) {
+  if (scaled && exclusion == Exclusion::out_of_range && volume_excluded(q)) {
     count(counters, &StageCounters::volume_exclusion);
     return std::nullopt;
   }

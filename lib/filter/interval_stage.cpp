@@ -16,10 +16,11 @@
 //    exact zeros at t = 0, t = 1 or a cell's midpoint are roots known exactly (common with
 //    small-integer or dyadic input, where interval arithmetic happens to be exact); zero
 //    coefficients are skipped when counting sign changes.
-// 2. Cells come out in increasing t. Over a root cell T every other polynomial of the rule is
-//    evaluated with interval Horner on T: an interval that excludes 0 gives the polynomial's
-//    sign at the root, an exact [0, 0] means the polynomial vanishes identically, anything else
-//    is uncertain. Uncertain: shrink T by certified bisection of V and retry once.
+// 2. Cells come out in increasing t. Over a root cell T every other term of the rule is
+//    enclosed over T, first from the points' relative positions over T (interval_values.hpp),
+//    then from its polynomial by interval Horner: an interval that excludes 0 gives the term's
+//    sign at the root, an exact [0, 0] means the term vanishes identically, anything else is
+//    uncertain. Uncertain: shrink T by certified bisection of V and retry.
 // 3. The earliest root where the rule holds is the TOI (the candidate argument of
 //    exact_ccd.cpp). It is narrowed by certified bisection to two consecutive doubles.
 // 4. Coplanar for all t (V's coefficients exactly [0, 0]): the candidates are 0, 1 and the

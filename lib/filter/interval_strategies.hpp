@@ -12,6 +12,7 @@
 #include "contact/contact_rule.hpp"
 #include "filter/interval_isolation.hpp"
 #include "filter/interval_stage.hpp"
+#include "filter/interval_values.hpp"
 #include "filter/toi_narrowing.hpp"
 
 namespace exactccd::filter::interval {
@@ -23,11 +24,26 @@ namespace exactccd::filter::interval {
 inline constexpr int kToiHalvings = 16;
 enum class CellVerdict { contact, no_contact, uncertain };
 
-/// The in-plane rule over a root cell of `defining`; on an uncertain sign the cell is narrowed
-/// (16 halvings, then to consecutive doubles) and the rule retried, while that makes progress.
+/// The in-plane rule over a root cell of `defining`. Unless `defining` is one of the rule's own
+/// polynomials (whose zero the oracle must know), first from the terms' values over the cell
+/// and over the cell narrowed by 16 halvings (interval_values.hpp); then from the polynomials,
+/// narrowing the cell (16 halvings, then to consecutive doubles) and retrying while that makes
+/// progress.
 template <class Polys, int D>
 CellVerdict in_plane_verdict(const Polys& P, const contact::Poly<Interval, D>& defining, bool defining_is_rule_poly,
                              RootCell& cell) {
+  if (!defining_is_rule_poly) {
+    // First from the terms' values over the cell (interval_values.hpp: no polynomial built),
+    // and when those are uncertain, over the cell narrowed by 16 halvings (the values' enclosure
+    // tightens with the cell). Only then are the rule's polynomials built (below).
+    contact::Truth t = in_plane_rule_over(P, cell);
+    if (t == contact::Truth::unknown && !cell.is_point()) {
+      narrow(defining, cell, 16);
+      t = in_plane_rule_over(P, cell);
+    }
+    if (t == contact::Truth::yes) return CellVerdict::contact;
+    if (t == contact::Truth::no) return CellVerdict::no_contact;
+  }
   for (int attempt = 0; attempt < 3; ++attempt) {
     const IntervalSignOracle oracle{Interval(cell.lo, cell.hi), defining_is_rule_poly ? &defining : nullptr};
     const contact::Truth t = contact::in_plane_contact(P, oracle);

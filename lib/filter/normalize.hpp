@@ -20,7 +20,9 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
   scaled = false;
   auto r = rows(q);
   double largest = 0;
-  for (const Vec3& p : r) largest = std::fmax(largest, std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))));
+  // Finite input: plain comparisons (std::fmax's NaN handling costs a library call each).
+  for (const Vec3& p : r)
+    for (const double x : {p.x, p.y, p.z}) largest = std::fabs(x) > largest ? std::fabs(x) : largest;
   if (largest == 0) return q;
   const int s = -std::ilogb(largest);
   if (s == 0) return q;

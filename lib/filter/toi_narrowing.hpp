@@ -30,9 +30,9 @@ enum class Narrowing {
 template <int D>
 Narrowing narrow(const contact::Poly<Interval, D>& p, RootCell& cell, int max_steps) {
   for (int step = 0; step < max_steps; ++step) {
-    if (cell.is_point() || !(std::nextafter(cell.lo, kInf) < cell.hi)) return Narrowing::done;
+    if (cell.is_point() || !(next_up_nonnegative(cell.lo) < cell.hi)) return Narrowing::done;
     double mid = cell.lo + (cell.hi - cell.lo) / 2;
-    if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, kInf);
+    if (!(cell.lo < mid && mid < cell.hi)) mid = next_up_nonnegative(cell.lo);
     const SignClass c = classify(p(Interval(mid)));
     if (c == SignClass::unknown) return Narrowing::stuck;
     if (c == SignClass::zero) {
@@ -42,7 +42,7 @@ Narrowing narrow(const contact::Poly<Interval, D>& p, RootCell& cell, int max_st
     const int s = c == SignClass::positive ? 1 : -1;
     (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
   }
-  return cell.is_point() || !(std::nextafter(cell.lo, kInf) < cell.hi) ? Narrowing::done
+  return cell.is_point() || !(next_up_nonnegative(cell.lo) < cell.hi) ? Narrowing::done
                                                                          : Narrowing::partial;
 }
 

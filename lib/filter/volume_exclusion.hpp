@@ -104,16 +104,20 @@ inline std::optional<CertifiedSum> certified_group(double sum, double permanent_
   return CertifiedSum{sum, tau};
 }
 
+/// certified_group_sign's answer when the bound does not apply (Q~ below T, or an overflow).
+inline constexpr int kOutOfRange = 2;
+
 /// Certified sign of a sum of up to three rounded determinants: +1 or -1 when certain, 0 when
-/// the filter cannot tell. `threshold` is T of the bound above (from the largest entry).
-/// The same test as certified_group followed by a comparison with the bound, written out for
-/// the hot path (an overflow makes tau infinite or a comparison false: no sign).
+/// the bound leaves it open, kOutOfRange when the bound does not apply. `threshold` is T of the
+/// bound above (from the largest entry). The same test as certified_group followed by a
+/// comparison with the bound, written out for the hot path (an overflow makes the permanent
+/// sum, and so tau, infinite: neither comparison holds, and the sign is out of range).
 inline int certified_group_sign(double sum, double permanent_sum, double threshold) {
-  if (!(permanent_sum >= threshold)) return 0;  // underflow guard, see above; also catches NaN
+  if (!(permanent_sum >= threshold)) return kOutOfRange;  // underflow guard, see above; also catches NaN
   const double tau = group_error_bound(permanent_sum);
   if (sum > tau) return 1;
   if (sum < -tau) return -1;
-  return 0;
+  return tau < std::numeric_limits<double>::infinity() ? 0 : kOutOfRange;
 }
 
 /// The largest |coordinate| of v (NaN cannot occur: entries are differences of finite doubles).
@@ -159,27 +163,55 @@ inline std::optional<std::array<CertifiedSum, 4>> certified_volume_bernstein(con
   return std::array<CertifiedSum, 4>{*b[0], *b[1], *b[2], *b[3]};
 }
 
-/// Certified "V(t) != 0 for every t in [0, 1]" for the volume det[u(t), v(t), w(t)], rows given
-/// at t = 0 and t = 1 as rounded differences of the input points. False means "not proven".
-inline bool volume_certainly_nonzero(const Vec3& u0, const Vec3& u1, const Vec3& v0,
-                                     const Vec3& v1, const Vec3& w0, const Vec3& w1) {
+/// What stage 1 proved about a volume.
+enum class Exclusion {
+  excluded,      ///< V(t) != 0 for every t in [0, 1]
+  not_proven,    ///< the bound applies but does not prove it (a coefficient's sign is open, or
+                 ///< two have opposite signs)
+  out_of_range,  ///< a bound needed did not apply (underflow guard or overflow)
+};
+
+/// Stage 1 on the volume det[u(t), v(t), w(t)], rows given at t = 0 and t = 1 as rounded
+/// differences of the input points. On a query scaled by 2^s every rounded value above is the
+/// unscaled one times 2^s, 2^2s or 2^3s (by degree) unless a value is subnormal or overflows, and
+/// the sign tests compare values of the same degree: a not_proven answer stays not_proven after
+/// scaling but for such subnormal cases. The filtered method therefore retries on the query
+/// scaled towards 1 (filtered_ccd.cpp) only after out_of_range; skipping a retry can only leave
+/// a query to the later stages, which are sound for every input.
+inline Exclusion volume_exclusion(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, const Vec3& w0,
+                                  const Vec3& w1) {
   const double threshold = underflow_threshold(u0, u1, v0, v1, w0, w1);
+  const auto verdict = [](int s, int s0) {
+    return s == kOutOfRange ? Exclusion::out_of_range : s == s0 ? Exclusion::excluded : Exclusion::not_proven;
+  };
   const RoundedDeterminant d000 = rounded_determinant(u0, v0, w0);
   const int s0 = certified_group_sign(d000.value, d000.permanent, threshold);
-  if (s0 == 0) return false;
+  if (s0 == 0 || s0 == kOutOfRange) return verdict(s0, 1);
   const RoundedDeterminant d111 = rounded_determinant(u1, v1, w1);
-  if (certified_group_sign(d111.value, d111.permanent, threshold) != s0) return false;
+  if (const Exclusion e = verdict(certified_group_sign(d111.value, d111.permanent, threshold), s0);
+      e != Exclusion::excluded)
+    return e;
   const RoundedDeterminant d100 = rounded_determinant(u1, v0, w0);
   const RoundedDeterminant d010 = rounded_determinant(u0, v1, w0);
   const RoundedDeterminant d001 = rounded_determinant(u0, v0, w1);
-  if (certified_group_sign(d100.value + d010.value + d001.value,
-                           d100.permanent + d010.permanent + d001.permanent, threshold) != s0)
-    return false;
+  if (const Exclusion e = verdict(certified_group_sign(d100.value + d010.value + d001.value,
+                                                       d100.permanent + d010.permanent + d001.permanent, threshold),
+                                  s0);
+      e != Exclusion::excluded)
+    return e;
   const RoundedDeterminant d110 = rounded_determinant(u1, v1, w0);
   const RoundedDeterminant d101 = rounded_determinant(u1, v0, w1);
   const RoundedDeterminant d011 = rounded_determinant(u0, v1, w1);
-  return certified_group_sign(d110.value + d101.value + d011.value,
-                              d110.permanent + d101.permanent + d011.permanent, threshold) == s0;
+  return verdict(certified_group_sign(d110.value + d101.value + d011.value,
+                                      d110.permanent + d101.permanent + d011.permanent, threshold),
+                 s0);
+}
+
+/// Certified "V(t) != 0 for every t in [0, 1]" (volume_exclusion is excluded). False means
+/// "not proven".
+inline bool volume_certainly_nonzero(const Vec3& u0, const Vec3& u1, const Vec3& v0,
+                                     const Vec3& v1, const Vec3& w0, const Vec3& w1) {
+  return volume_exclusion(u0, u1, v0, v1, w0, w1) == Exclusion::excluded;
 }
 
 inline Vec3 rounded_difference(const Vec3& a, const Vec3& b) {
@@ -189,15 +221,21 @@ inline Vec3 rounded_difference(const Vec3& a, const Vec3& b) {
 /// Stage 1 for any kind: its volume V (kinds::...::volume_rows: det[u - base, v - base,
 /// w - base]) never vanishes on [0, 1], so the four points are never coplanar.
 template <class Query>
-inline bool volume_excluded(const Query& q) {
+inline Exclusion volume_exclusion(const Query& q) {
   using Kind = kinds::kind_of<Query>;
   constexpr auto v = Kind::volume_rows;
   constexpr int n = Kind::points;  // the row of a point at t1 is n rows after its row at t0
   const auto r = rows(q);
-  return volume_certainly_nonzero(
+  return volume_exclusion(
       rounded_difference(r[v[1]], r[v[0]]), rounded_difference(r[v[1] + n], r[v[0] + n]),
       rounded_difference(r[v[2]], r[v[0]]), rounded_difference(r[v[2] + n], r[v[0] + n]),
       rounded_difference(r[v[3]], r[v[0]]), rounded_difference(r[v[3] + n], r[v[0] + n]));
+}
+
+/// volume_exclusion(q) is excluded.
+template <class Query>
+inline bool volume_excluded(const Query& q) {
+  return volume_exclusion(q) == Exclusion::excluded;
 }
 
 }  // namespace exactccd::filter
