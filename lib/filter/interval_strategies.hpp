@@ -25,20 +25,24 @@ inline constexpr int kToiHalvings = 16;
 enum class CellVerdict { contact, no_contact, uncertain };
 
 /// The in-plane rule over a root cell of `defining`. Unless `defining` is one of the rule's own
-/// polynomials (whose zero the oracle must know), first from the terms' values over the cell
-/// and over the cell narrowed by 16 halvings (interval_values.hpp); then from the polynomials,
-/// narrowing the cell (16 halvings, then to consecutive doubles) and retrying while that makes
-/// progress.
+/// polynomials (whose zero the oracle must know), first from the terms' values over the cell,
+/// over the cell narrowed by 16 halvings and over the cell narrowed to consecutive doubles
+/// (interval_values.hpp); then from the polynomials, narrowing the cell (16 halvings, then to
+/// consecutive doubles) and retrying while that makes progress.
 template <class Polys, int D>
 CellVerdict in_plane_verdict(const Polys& P, const contact::Poly<Interval, D>& defining, bool defining_is_rule_poly,
                              RootCell& cell) {
   if (!defining_is_rule_poly) {
     // First from the terms' values over the cell (interval_values.hpp: no polynomial built),
-    // and when those are uncertain, over the cell narrowed by 16 halvings (the values' enclosure
-    // tightens with the cell). Only then are the rule's polynomials built (below).
+    // and when those are uncertain, over the cell narrowed by 16 halvings, then to consecutive
+    // doubles (the values' enclosure tightens with the cell). Only then are the rule's
+    // polynomials built (below).
     contact::Truth t = in_plane_rule_over(P, cell);
-    if (t == contact::Truth::unknown && !cell.is_point()) {
-      narrow(defining, cell, 16);
+    for (const int halvings : {16, 1100}) {
+      if (t != contact::Truth::unknown || cell.is_point()) break;
+      const RootCell before = cell;
+      narrow(defining, cell, halvings);
+      if (cell.lo == before.lo && cell.hi == before.hi) break;
       t = in_plane_rule_over(P, cell);
     }
     if (t == contact::Truth::yes) return CellVerdict::contact;
