@@ -14,6 +14,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
+#include "filter/filtered_ccd.hpp"
 #include "filter/normalize.hpp"
 #include "filter/volume_exclusion.hpp"
 #include "fuzz/families.hpp"
@@ -168,13 +169,20 @@ TEST(VolumeExclusion, VerdictsAgreeWithExactSignsAndAreScaleInvariantInRange) {
     EXPECT_NE(e, filter::Exclusion::out_of_range) << "query " << n << " is of unit size";
     for (int k : {-300, -37, -1, 1, 5, 200})
       EXPECT_EQ(exclusion_of(scaled(r, k)), e) << "query " << n << " scaled by 2^" << k;
-    const Rows tiny = scaled(r, -1000);
-    EXPECT_EQ(exclusion_of(tiny), filter::Exclusion::out_of_range) << "query " << n;
-    if (e == filter::Exclusion::excluded) {
+    // Tiny (the underflow guard) and huge (products overflow) copies are out of range, and the
+    // filtered method's retry on the copy scaled towards 1 decides them in stage 1 when the
+    // unit-size query is excluded there.
+    for (int k : {-1000, 600}) {
+      const Rows far = scaled(r, k);
+      EXPECT_EQ(exclusion_of(far), filter::Exclusion::out_of_range) << "query " << n << " scaled by 2^" << k;
+      if (e != filter::Exclusion::excluded) continue;
       bool was_scaled = false;
-      const EdgeEdgeQuery unit_query = filter::scaled_to_unit(from_rows<EdgeEdgeQuery>(tiny), was_scaled);
+      const EdgeEdgeQuery unit_query = filter::scaled_to_unit(from_rows<EdgeEdgeQuery>(far), was_scaled);
       EXPECT_TRUE(was_scaled);
       EXPECT_TRUE(filter::volume_excluded(unit_query)) << "query " << n;
+      StageCounters counters;
+      EXPECT_FALSE(filter::filtered(from_rows<EdgeEdgeQuery>(far), false, &counters));
+      EXPECT_EQ(counters.volume_exclusion, 1u) << "query " << n << " scaled by 2^" << k << ": not decided by the retry";
     }
   }
   EXPECT_GT(verdicts[static_cast<int>(filter::Exclusion::excluded)], 500u);

@@ -1,5 +1,5 @@
 // The contact rule's terms as intervals over a time interval T, without their polynomials
-// (docs/design.md, 5.2, "Values over a cell").
+// (docs/design.md, 5.2, "Signs at a root": the values over the cell).
 //
 // The interval stage decides the in-plane rule over a root cell T of V from certified signs of
 // the rule's terms over T. Building a term's polynomial in interval arithmetic (a degree-4
@@ -33,6 +33,8 @@ class MotionOver {
  public:
   /// `rows`: the query's rows in intervals (t0 rows, then t1 rows).
   MotionOver(const std::array<Vec3T<Interval>, 8>& rows, Interval t) : rows_(&rows), t_(t) {}
+  /// Not from a temporary: the motion keeps a pointer to the rows.
+  MotionOver(std::array<Vec3T<Interval>, 8>&&, Interval) = delete;
 
   /// The vector from row `from` to row `to` over t: d0 + (d1 - d0) t per coordinate.
   const Vec3T<Interval>& rel(int from, int to) const {

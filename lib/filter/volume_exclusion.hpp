@@ -173,11 +173,14 @@ enum class Exclusion {
 
 /// Stage 1 on the volume det[u(t), v(t), w(t)], rows given at t = 0 and t = 1 as rounded
 /// differences of the input points. On a query scaled by 2^s every rounded value above is the
-/// unscaled one times 2^s, 2^2s or 2^3s (by degree) unless a value is subnormal or overflows, and
-/// the sign tests compare values of the same degree: a not_proven answer stays not_proven after
-/// scaling but for such subnormal cases. The filtered method therefore retries on the query
-/// scaled towards 1 (filtered_ccd.cpp) only after out_of_range; skipping a retry can only leave
-/// a query to the later stages, which are sound for every input.
+/// unscaled one times 2^s, 2^2s or 2^3s (by degree) unless a value is subnormal or overflows in
+/// either run, and each sign test S~ > tau compares values of the same degree. The underflow
+/// guard Q~ >= T does not scale alike (T is not a pure power of the scale), but where it passes
+/// in both runs the signs agree, and where it fails in the scaled run the answer there is
+/// out_of_range, never excluded. So a not_proven answer stays not_proven after scaling but for
+/// the subnormal cases. The filtered method therefore retries on the query scaled towards 1
+/// (filtered_ccd.cpp) only after out_of_range; skipping a retry can only leave a query to the
+/// later stages, which are sound for every input.
 inline Exclusion volume_exclusion(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, const Vec3& w0,
                                   const Vec3& w1) {
   const double threshold = underflow_threshold(u0, u1, v0, v1, w0, w1);
