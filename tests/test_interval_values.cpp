@@ -40,6 +40,10 @@ struct Checker {
   void vector(const Vec3T<Interval>& value, const Vec3T<contact::Poly<mpq_class, D>>& exact, const char* name) {
     (*this)(value.x, exact.x, name), (*this)(value.y, exact.y, name), (*this)(value.z, exact.z, name);
   }
+  void segment(const contact::PointOnSegment<Vec3T<Interval>, Interval>& value, const contact::PointOnSegmentPolys<mpq_class>& exact,
+               const char* name) {
+    vector(value.cross, exact.cross, name), (*this)(value.dot, exact.dot, name);
+  }
 };
 
 template <class Rows>
@@ -66,15 +70,13 @@ void check_terms(const std::array<Vec3, 8>& r, double lo, double hi, const std::
     c.vector(vf.normal(), vf_exact.normal(), "vf normal");
     for (int i = 0; i < 3; ++i) {
       c(vf.barycentric(i), vf_exact.barycentric(i), "vf barycentric");
-      c.vector(vf.on_edge(i).cross, vf_exact.on_edge(i).cross, "vf on_edge cross");
-      c(vf.on_edge(i).dot, vf_exact.on_edge(i).dot, "vf on_edge dot");
+      c.segment(vf.on_edge(i), vf_exact.on_edge(i), "vf on_edge");
     }
     c(ee.volume(), ee_exact.volume(), "ee volume");
     c.vector(ee.direction_cross(), ee_exact.direction_cross(), "ee direction_cross");
     for (int i = 0; i < 4; ++i) {
       c(ee.parameter(i), ee_exact.parameter(i), "ee parameter");
-      c.vector(ee.endpoint_on_edge(i).cross, ee_exact.endpoint_on_edge(i).cross, "ee endpoint cross");
-      c(ee.endpoint_on_edge(i).dot, ee_exact.endpoint_on_edge(i).dot, "ee endpoint dot");
+      c.segment(ee.endpoint_on_edge(i), ee_exact.endpoint_on_edge(i), "ee endpoint on edge");
     }
     checked += c.checked;
   }

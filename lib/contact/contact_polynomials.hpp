@@ -87,6 +87,25 @@ struct TermTypes {
   using OnSegment = PointOnSegment<Vector2, Scalar2>;
 };
 
+/// What the term classes of both kinds share: the motion their terms are built from.
+template <class Motion>
+class MotionTerms {
+ public:
+  explicit MotionTerms(Motion motion) : motion_(std::move(motion)) {}
+  /// With the motion constructed in place from `args`.
+  template <class... Args>
+  explicit MotionTerms(std::in_place_t, Args&&... args) : motion_(std::forward<Args>(args)...) {}
+  /// The motion the terms are built from.
+  const Motion& motion() const { return motion_; }
+
+ protected:
+  /// The relative motion from row `from` to row `to` (rows at t0; t1 four rows later).
+  decltype(auto) rel(int from, int to) const { return motion_.rel(from, to); }
+
+ private:
+  Motion motion_;
+};
+
 /// Returns the cached value, computing it with make() on first use.
 template <class T, class Make>
 const T& cached(std::optional<T>& slot, Make&& make) {
@@ -96,14 +115,12 @@ const T& cached(std::optional<T>& slot, Make&& make) {
 
 /// Vertex-face terms of p against triangle (a, b, c), built from a Motion (file comment).
 template <class Motion>
-class VertexFaceTerms {
+class VertexFaceTerms : public MotionTerms<Motion> {
   using Types = TermTypes<Motion>;
+  using MotionTerms<Motion>::rel;
 
  public:
-  explicit VertexFaceTerms(Motion motion) : motion_(std::move(motion)) {}
-  /// With the motion constructed in place from `args`.
-  template <class... Args>
-  explicit VertexFaceTerms(std::in_place_t, Args&&... args) : motion_(std::forward<Args>(args)...) {}
+  using MotionTerms<Motion>::MotionTerms;
 
   /// V = (b - a) . ((c - a) x (p - a)): zero iff the four points are coplanar.
   const typename Types::Scalar3& volume() const {
@@ -128,8 +145,6 @@ class VertexFaceTerms {
       return point_on_segment_terms(rel(u, kP), rel(u, v), rel(kP, v));
     });
   }
-  /// The motion the terms are built from.
-  const Motion& motion() const { return motion_; }
 
  private:
   static constexpr int kP = 0, kA = 1, kB = 2, kC = 3;  // rows at t0 (t1: four rows later)
@@ -138,9 +153,6 @@ class VertexFaceTerms {
     if (i == 1) return {kB, kC};
     return {kC, kA};
   }
-  decltype(auto) rel(int from, int to) const { return motion_.rel(from, to); }
-
-  Motion motion_;
   mutable std::optional<typename Types::Scalar3> volume_;
   mutable std::optional<typename Types::Vector2> normal_;
   mutable std::array<std::optional<typename Types::Scalar4>, 3> barycentric_;
@@ -159,14 +171,12 @@ class VertexFacePolys : public VertexFaceTerms<PolynomialMotion<NT>> {
 /// With da = a1 - a0, db = b1 - b0, r = b0 - a0, w = da x db, D = w . w, the coplanar lines
 /// meet at a0 + (U / D) da = b0 + (W / D) db where U = (r x db) . w and W = (r x da) . w.
 template <class Motion>
-class EdgeEdgeTerms {
+class EdgeEdgeTerms : public MotionTerms<Motion> {
   using Types = TermTypes<Motion>;
+  using MotionTerms<Motion>::rel;
 
  public:
-  explicit EdgeEdgeTerms(Motion motion) : motion_(std::move(motion)) {}
-  /// With the motion constructed in place from `args`.
-  template <class... Args>
-  explicit EdgeEdgeTerms(std::in_place_t, Args&&... args) : motion_(std::forward<Args>(args)...) {}
+  using MotionTerms<Motion>::MotionTerms;
 
   /// V = (a1 - a0) . ((b0 - a0) x (b1 - a0)): zero iff the four points are coplanar.
   const typename Types::Scalar3& volume() const {
@@ -196,14 +206,9 @@ class EdgeEdgeTerms {
       return point_on_segment_terms(rel(u, q), rel(u, v), rel(q, v));
     });
   }
-  /// The motion the terms are built from.
-  const Motion& motion() const { return motion_; }
 
  private:
   static constexpr int kA0 = 0, kA1 = 1, kB0 = 2, kB1 = 3;  // rows at t0 (t1: four rows later)
-  decltype(auto) rel(int from, int to) const { return motion_.rel(from, to); }
-
-  Motion motion_;
   mutable std::optional<typename Types::Scalar3> volume_;
   mutable std::optional<typename Types::Vector2> direction_cross_;
   mutable std::array<std::optional<typename Types::Scalar4>, 2> numerator_;  // U, W

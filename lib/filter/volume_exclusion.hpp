@@ -140,7 +140,7 @@ inline double underflow_threshold(const Vec3& u0, const Vec3& u1, const Vec3& v0
 
 /// V's cubic Bernstein coefficients on [0, 1] times C(3, m) (beta_0 .. beta_3 of the comment
 /// above), each with its certified error bound; nothing when a bound does not apply. The same
-/// computation and proof as volume_certainly_nonzero, for callers that need the coefficients
+/// computation and proof as volume_exclusion, for callers that need the coefficients
 /// themselves (the scene's time bounds subdivide them, lib/scene/time_bounds.cpp).
 inline std::optional<std::array<CertifiedSum, 4>> certified_volume_bernstein(const Vec3& u0, const Vec3& u1,
                                                                              const Vec3& v0, const Vec3& v1,
@@ -208,13 +208,6 @@ inline Exclusion volume_exclusion(const Vec3& u0, const Vec3& u1, const Vec3& v0
   return verdict(certified_group_sign(d110.value + d101.value + d011.value,
                                       d110.permanent + d101.permanent + d011.permanent, threshold),
                  s0);
-}
-
-/// Certified "V(t) != 0 for every t in [0, 1]" (volume_exclusion is excluded). False means
-/// "not proven".
-inline bool volume_certainly_nonzero(const Vec3& u0, const Vec3& u1, const Vec3& v0,
-                                     const Vec3& v1, const Vec3& w0, const Vec3& w1) {
-  return volume_exclusion(u0, u1, v0, v1, w0, w1) == Exclusion::excluded;
 }
 
 inline Vec3 rounded_difference(const Vec3& a, const Vec3& b) {
