@@ -3,8 +3,9 @@
 //   d = 0, filtered: the contact filter of filtered_ccd.hpp (a point is a zero-length edge, a
 //     2D query has z = 0: the edge-edge filter answers point-edge, point-point and 2D kinds),
 //     its TOI cut at tmax;
-//   d > 0, filtered: a certified separating direction (separating_direction.hpp), else the
-//     exact path;
+//   d > 0, filtered: a certified separating direction (separating_direction.hpp); for the
+//     answer alone (no TOI), then the contact filter (touching in [0, tmax] is within d); then
+//     the interval stage (interval_separation.hpp), else the exact path;
 //   exact: exact::toi for vertex-face and edge-edge at d = 0 (the reference of the contact
 //     question), separation::exact_toi otherwise (an independent derivation at d = 0).
 #include <cmath>
@@ -120,9 +121,21 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method me
       if (counters) ++counters->separating_direction;
       return std::nullopt;
     }
-    const separation::IntervalVerdict verdict = separation::interval_separation(q, p.min_distance, p.tmax);
+    // Whether the query collides: touching (distance 0) in [0, tmax] is being within d, and the
+    // contact filter decides most touching pairs far more cheaply than the separation walk.
+    // Its TOI t0 bounds the earliest time within d from above: [0, hi] encloses it.
+    bool probe_used_gmp = false;
+    if (!want_toi) {
+      StageCounters probe;
+      if (const auto touch = cut(touch_filtered(q, !whole_step, &probe), p.tmax)) {
+        if (counters) *counters += probe;  // one query, counted at the contact stage deciding it
+        return TimeInterval{0.0, touch->hi};
+      }
+      probe_used_gmp = probe.integer + probe.exact > 0;  // counted below, with the deciding stage
+    }
+    const separation::IntervalVerdict verdict = separation::interval_separation(q, p.min_distance, p.tmax, want_toi);
     if (verdict.decided) {
-      if (counters) ++(verdict.used_integers ? counters->integer : counters->interval);
+      if (counters) ++(verdict.used_integers || probe_used_gmp ? counters->integer : counters->interval);
       return verdict.toi;
     }
     if (counters) ++counters->exact;

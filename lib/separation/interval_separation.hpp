@@ -229,8 +229,12 @@ double root_guess(const kinds::Feature& f, const std::array<Vec3, N>& x, double 
 
 /// The interval stage for a query of any kind with min_distance d and time limit tmax (valid,
 /// checked by the caller). Needs round-to-nearest on entry (it installs upward rounding itself).
+/// Without `want_toi` only whether the query collides is decided: a collision's TOI is then an
+/// enclosure [lo, hi] of the earliest time, not the tightest one (a term that certainly holds
+/// at a double m of [0, tmax] gives [0, m]; a single root in a cell (a, b) with [0, a] free
+/// gives [a, b]).
 template <class Query>
-IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
+IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool want_toi = true) {
   using namespace interval_detail;
   using Kind = kinds::kind_of<Query>;
   const CGAL::Protect_FPU_rounding<true> upward;
@@ -238,8 +242,9 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
   const auto xd = points3<double>(q);
   std::array<bool, Kind::features.size()> use{};
   std::vector<int> feature_of_term;
+  const ProjectionFrame frame(xd, d);
   for (std::size_t f = 0; f < Kind::features.size(); ++f)
-    if ((use[f] = !feature_separated<Kind>(xd, Kind::features[f], d))) feature_of_term.push_back(static_cast<int>(f));
+    if ((use[f] = !feature_separated<Kind>(frame, Kind::features[f]))) feature_of_term.push_back(static_cast<int>(f));
   if (feature_of_term.empty()) return {true, std::nullopt};
   const auto x = points3<I>(q);
   const std::vector<Term<I>> terms = separation::terms<Kind>(x, I(d) * I(d), use.data());
@@ -253,6 +258,8 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
   }
   if (!all_fail_at_zero) return undecided;
   // 2.-4. The walk over the cells, with the terms whose bits are set in `initial`.
+  std::array<Side, Kind::points> all_sides;
+  for (int i = 0; i < Kind::points; ++i) all_sides[i] = i < Kind::first_points ? Side::first : Side::second;
   const auto walk = [&](std::uint32_t initial) -> IntervalVerdict {
     // 2. Cells in time order (a stack of right halves).
     constexpr int kMaxDepth = 48;
@@ -269,6 +276,8 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
     stack[top++] = {0.0, tmax, 0, initial};
     while (top > 0) {
       const Cell cell = stack[--top];
+      // A direction keeping the primitives apart over the cell excludes every term at once.
+      if (cell.depth > 0 && points_separated<Kind>(frame.over(cell.a, cell.b), all_sides, Kind::features, 1)) continue;
       int alive = -1, alive_count = 0;
       std::uint32_t open = 0;
       for (std::size_t i = 0; i < terms.size(); ++i)
@@ -287,6 +296,7 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
         if (g_positive && certain_sign(evaluate(term.distance, I(cell.a))) > 0 &&
             certain_sign(evaluate(term.distance, I(cell.b))) < 0 &&
             certain_sign(evaluate(derivative(term.distance), I(cell.a, cell.b))) != 0) {
+          if (!want_toi) return {true, TimeInterval{cell.a, cell.b}};
           const kinds::Feature& feature = Kind::features[feature_of_term[alive]];
           // Signs at doubles in double-double arithmetic, which needs round-to-nearest (restored
           // to upward rounding when this scope ends; the stage returns from it).
@@ -354,6 +364,9 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax) {
       if (cell.depth >= kMaxDepth) return undecided;
       const double m = cell.a + (cell.b - cell.a) / 2;
       if (!(cell.a < m && m < cell.b)) return undecided;
+      if (!want_toi)  // a term certainly holding at m: a collision, at m or earlier
+        for (std::size_t i = 0; i < terms.size(); ++i)
+          if ((open >> i & 1) && holds(terms[i], I(m))) return {true, TimeInterval{0.0, m}};
       stack[top++] = {m, cell.b, cell.depth + 1, open};  // right half, examined after the left one
       stack[top++] = {cell.a, m, cell.depth + 1, open};
     }

@@ -1,26 +1,58 @@
 // The filtered method's stage for minimum separation: a certified separating direction.
 //
-// Every point of A(t), t in [0, 1], is a convex combination of A's vertices at t, and each of
-// those of the vertex's positions at t0 and t1 (linear motion). So for any vector n != 0,
-// n.a <= max over A's rows of n.x and n.b >= min over B's rows of n.x, and if
-// gap = min_B n.x - max_A n.x > d |n| then n.(b - a) > d |n| and, by Cauchy-Schwarz,
+// Why a direction separates. Every point of A(t), t in [0, 1], is a convex combination of A's
+// vertices at t, and each of those of the vertex's positions at t0 and t1 (linear motion). So
+// for any vector n != 0, n.a <= max over A's rows of n.x and n.b >= min over B's rows of n.x,
+// and if gap = min_B n.x - max_A n.x > d |n| then n.(b - a) > d |n| and, by Cauchy-Schwarz,
 // |b - a| > d for every a in A(t), b in B(t), t in [0, 1]: no collision (likewise with A and
-// B exchanged). The direction n is any double vector (it need not be accurate, only finite);
-// the products and the comparison gap^2 > d^2 (n.n) with gap > 0 are evaluated in interval
-// arithmetic (CGAL::Interval_nt under upward rounding), so the conclusion is certified whatever
-// the rounding of n, including overflow (an infinite bound never certifies) and gradual
-// underflow (intervals stay inclusive with subnormals; the caller's DefaultFpEnvironment has
-// cleared flush-to-zero). Directions tried, cheapest first: the coordinate axes, then for each
-// of the kind's feature pairs its natural direction at t0 and at t1 (point-point: y - x;
-// point-edge: e x (r x e), the perpendicular from the line to the point; point-triangle: the
-// normal; edge-edge: da x db).
+// B exchanged). n is any double vector (only its finiteness matters, not its accuracy).
+//
+// How it is certified, in plain doubles with a static error bound (no interval arithmetic, no
+// rounding-mode switch). The bound holds in every rounding mode (each operation's relative
+// error is below e = 2^-52, a product's absolute error in the subnormal range below 2^-1074);
+// subnormals must be honoured (the callers' DefaultFpEnvironment clears flush-to-zero).
+//  1. Frame (ProjectionFrame). Every coordinate and d are multiplied by the power of two 2^s
+//     that brings the largest coordinate magnitude X into [1, 2): exact, except that a result
+//     in the subnormal range may be off by less than 2^-1074 (and d 2^s may overflow to
+//     infinity: then nothing certifies, rightly, since every gap is below 16 < d 2^s). The
+//     gap and d scale alike, so the question is unchanged. Then the first row o is subtracted
+//     from every row (|x - o| < 4, no overflow): y = x - o with a relative error below e. A
+//     common translation changes no gap. Y is the largest |y| (bounds now relative to the
+//     primitives' local extent, not to their distance from the origin).
+//  2. Direction. n is divided by its largest component magnitude (any rounding: the result is
+//     just another direction): that component is exactly +-1 and the others are in [-1, 1], so
+//     |n|_1 <= 3 and 1 <= n.n <= 3.
+//  3. Projections p = (n_x y_x + n_y y_y) + n_z y_z. Against n.(exact translated, scaled row):
+//     the rounding of the projection, gamma_3 sum |n_k y_k| + 3 2^-1074 (1 + e)^2
+//     <= 3.01 e 3 Y + 2^-1072, plus sum |n_k| |error of y_k| <= 3 (1.01 e Y + 2^-1073) (the
+//     translation's rounding, and 2^-1074 for each of the two scaled coordinates it
+//     subtracts): in all below 12.1 e Y + 2^-1070 < 2^-48 Y (1 - e) + 2^-1061 <= E =
+//     fl(Y 2^-48) + 2^-1060 (fl(Y 2^-48) >= Y 2^-48 - 2^-1074, and the sum of two positive
+//     doubles is at least their exact sum times 1 - e).
+//  4. Gap. With a_hi the largest computed projection of one side and b_lo the least of the
+//     other, the exact gap is at least (b_lo - a_hi) - 2E, and g = fl(b_lo - a_hi) is at most
+//     (b_lo - a_hi)(1 + e) when positive. With r = fl(sqrt(fl(n.n))), |n| <= r (1 + 2^-50)
+//     (n.n >= 1, so underflowed squares are negligible: the sum's relative error is below
+//     3.02 e, the square root's below e), and the exact d 2^s is below d' + 2^-1074 (d' its
+//     computed value), so d |n| <= fl(d' r) (1 + 2^-49) + 2^-1070. Hence gap > d |n| when
+//     g > (1 + e) (2E + fl(d' r) (1 + 2^-49) + 2^-1070), which the computed
+//     T = fl(fl(fl(2E + fl(d' r)) + 2^-1060) (1 + 2^-47)) is at least (three roundings cost
+//     at most 3e, and 2^-47 - 3e > 2^-52 + 2^-49 + 2^-100). The test is g > T; an infinite
+//     T (overflow of d') never certifies, and nothing else is near overflow (every |y| < 4,
+//     every |p| < 12, E < 2^-45).
+// Directions tried: for each of the kind's feature pairs in order (the primitives' own pair
+// first) its natural direction at t0 and at t1 (point-point: y - x; point-edge: e x (r x e),
+// the perpendicular from the line to the point; point-triangle: the normal; edge-edge:
+// da x db), then the coordinate axes (on the simulation sets, candidates of a broad phase,
+// the first pair's direction at t0 decides most queries and the axes none).
 #pragma once
-
-#include <CGAL/Interval_nt.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "contact/vec3_ops.hpp"
@@ -33,72 +65,147 @@ namespace exactccd::separation {
 /// Which set a point belongs to in points_separated: neither, the first or the second.
 enum class Side { none, first, second };
 
+/// floor(log2 v) for a finite v > 0 (std::ilogb without the library call for normal v).
+inline int binary_exponent(double v) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &v, sizeof bits);
+  const int biased = static_cast<int>(bits >> 52 & 0x7ff);
+  return biased != 0 ? biased - 1023 : std::ilogb(v);  // subnormal: rare, the library
+}
+
+/// 2^k as a double, for k in [-1022, 1023] (normal: exact from its bits).
+inline double power_of_two(int k) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
+  double v = 0;
+  std::memcpy(&v, &bits, sizeof v);
+  return v;
+}
+
+/// A query's rows and d in the frame of the header's step 1 (scaled by a power of two,
+/// translated to the first row), with the projection error bound E of step 3. `usable` is
+/// false when every coordinate is zero (no direction can separate anything then).
+template <std::size_t N>
+struct ProjectionFrame {
+  std::array<Vec3, N> y;
+  double d = 0;      ///< d 2^s (possibly infinite)
+  double error = 0;  ///< E: bounds |computed n.y - exact n.(row)| for a normalised n
+  double extent = 0;  ///< Y: the largest |y| at t0 and t1
+  bool usable = false;
+
+  ProjectionFrame() = default;
+
+  /// The frame of rows `x` (finite doubles) and the minimum distance d >= 0 (finite).
+  ProjectionFrame(const std::array<Vec3, N>& x, double min_distance) {
+    double largest = 0;
+    for (const Vec3& p : x) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    if (!(largest > 0)) return;
+    const int s = -binary_exponent(largest);  // largest 2^s in [1, 2); s in [-1023, 1074]
+    // 2^s as two normal double factors (2^1074 is not a double), applied in turn.
+    const int k = std::clamp(s, -1022, 1000);
+    const double first = power_of_two(k), second = power_of_two(s - k);
+    const auto scale = [&](double v) { return (v * first) * second; };
+    const Vec3 o{scale(x[0].x), scale(x[0].y), scale(x[0].z)};
+    double extent = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+      y[i] = {scale(x[i].x) - o.x, scale(x[i].y) - o.y, scale(x[i].z) - o.z};
+      extent = std::max({extent, std::fabs(y[i].x), std::fabs(y[i].y), std::fabs(y[i].z)});
+    }
+    d = scale(min_distance);
+    this->extent = extent;
+    error = extent * 0x1p-48 + 0x1p-1060;
+    usable = true;
+  }
+
+  /// The rows at the times a and b (doubles, 0 <= a <= b <= 1) in place of t0 and t1: the
+  /// points move linearly over [a, b] as well, so a direction certified on these rows
+  /// separates over [a, b]. Each row y0 + a (y1 - y0) is computed with an error below
+  /// 7.01 e Y + 2^-1074 per coordinate (the difference, the product, the sum; every |y| <= Y),
+  /// on top of y's own 1.01 e Y + 2^-1073; the rows stay below Y (1 + 9 e) in magnitude, so a
+  /// projection errs by at most 9.03 e Y (1 + 9 e) + 3 (8.02 e Y + 2^-1072) < 2^-46 Y + 2^-1069:
+  /// the error bound becomes fl(Y 2^-46) + 2^-1060 (as in step 3 of the header).
+  ProjectionFrame over(double a, double b) const {
+    ProjectionFrame r = *this;
+    constexpr std::size_t P = N / 2;
+    for (std::size_t i = 0; i < P; ++i) {
+      const Vec3 &y0 = y[i], &y1 = y[i + P];
+      const Vec3 delta{y1.x - y0.x, y1.y - y0.y, y1.z - y0.z};
+      r.y[i] = {y0.x + a * delta.x, y0.y + a * delta.y, y0.z + a * delta.z};
+      r.y[i + P] = {y0.x + b * delta.x, y0.y + b * delta.y, y0.z + b * delta.z};
+    }
+    r.error = extent * 0x1p-46 + 0x1p-1060;
+    return r;
+  }
+};
+
 /// True when a direction certifies that the points of `side` first, moving linearly over
 /// [0, 1], stay farther than d from the hull of the second ones (so from every convex
-/// combination of them) at every t; directions: the axes, then those of `features` at t0 and t1
-/// (the header's argument). `x`: a query's points3 rows in doubles. False: only "not certified".
+/// combination of them) at every t; directions: those of `features` at t0 and t1, then the axes
+/// (the header's argument). False: only "not certified".
 template <class Kind, std::size_t N, std::size_t F>
-bool points_separated(const std::array<Vec3, N>& x, const std::array<Side, Kind::points>& side, double d,
+bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Kind::points>& side,
                       const std::array<kinds::Feature, F>& features, std::size_t feature_count) {
-  using I = CGAL::Interval_nt<false>;
   constexpr int P = Kind::points;
-  const CGAL::Protect_FPU_rounding<true> upward;  // Interval_nt<false> needs it
-  const I d2 = I(d) * I(d);
-  // Certifies the gap along n, given the projection of every row (an interval each).
-  const auto certifies = [&](auto&& project, const I& nn) {
+  if (!frame.usable) return false;
+  const std::array<Vec3, N>& y = frame.y;
+  // Certifies the gap along the normalised direction n (header, step 4).
+  const auto certifies = [&](const Vec3& n) {
     constexpr double inf = std::numeric_limits<double>::infinity();
     double a_lo = inf, a_hi = -inf, b_lo = inf, b_hi = -inf;
     for (int i = 0; i < 2 * P; ++i) {
       if (side[i % P] == Side::none) continue;
-      const I v = project(x[i]);
-      if (std::isnan(v.inf()) || std::isnan(v.sup())) return false;  // (cannot happen: bounds
-      // of finite products are never +inf below or -inf above, so no inf - inf)
-      const bool in_a = side[i % P] == Side::first;
-      double& lo = in_a ? a_lo : b_lo;
-      double& hi = in_a ? a_hi : b_hi;
-      lo = std::min(lo, v.inf());
-      hi = std::max(hi, v.sup());
+      const Vec3& v = y[static_cast<std::size_t>(i)];
+      const double p = (n.x * v.x + n.y * v.y) + n.z * v.z;
+      if (side[i % P] == Side::first) {
+        a_lo = std::min(a_lo, p);
+        a_hi = std::max(a_hi, p);
+      } else {
+        b_lo = std::min(b_lo, p);
+        b_hi = std::max(b_hi, p);
+      }
     }
-    const auto clears = [&](double low, double high) {  // low - high > d |n|, certified
-      const I gap = I(low) - I(high);
-      return gap.inf() > 0 && (gap * gap).inf() > (d2 * nn).sup();
-    };
-    return clears(b_lo, a_hi) || clears(a_lo, b_hi);
+    const double r = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+    const double threshold = ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
+    return b_lo - a_hi > threshold || a_lo - b_hi > threshold;
   };
-  for (int axis = 0; axis < Kind::dimension; ++axis) {
-    const auto coordinate = [&](const Vec3& v) { return I(axis == 0 ? v.x : axis == 1 ? v.y : v.z); };
-    if (certifies(coordinate, I(1))) return true;
-  }
+  // A direction normalised by its largest component magnitude (header, step 2).
   const auto along = [&](const Vec3& n) {
-    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) return false;
-    const auto project = [&](const Vec3& v) { return I(n.x) * I(v.x) + I(n.y) * I(v.y) + I(n.z) * I(v.z); };
-    return certifies(project, project(n));
+    const double m = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
+    if (!(m > 0 && m <= std::numeric_limits<double>::max())) return false;  // zero or not finite
+    return certifies(Vec3{n.x / m, n.y / m, n.z / m});
   };
   for (std::size_t k = 0; k < feature_count; ++k) {
     const kinds::Feature& f = features[k];
     if (Kind::dimension == 2 && f.pair == kinds::FeaturePair::edge_edge) continue;  // n = z axis
     for (int at = 0; at < 2 * P; at += P) {
       using contact::cross;
-      const auto p = [&](int j) { return x[f.points[j] + at]; };
+      using contact::operator-;
+      const auto p = [&](int j) { return y[static_cast<std::size_t>(f.points[j] + at)]; };
       Vec3 n{};
       switch (f.pair) {
-        case kinds::FeaturePair::point_point: n = contact::operator-(p(1), p(0)); break;
+        case kinds::FeaturePair::point_point: n = p(1) - p(0); break;
         case kinds::FeaturePair::point_edge: {
-          const Vec3 e = contact::operator-(p(2), p(1)), r = contact::operator-(p(0), p(1));
+          const Vec3 e = p(2) - p(1), r = p(0) - p(1);
           n = cross(e, cross(r, e));
           break;
         }
-        case kinds::FeaturePair::point_triangle:
-          n = cross(contact::operator-(p(2), p(1)), contact::operator-(p(3), p(1)));
-          break;
-        case kinds::FeaturePair::edge_edge:
-          n = cross(contact::operator-(p(1), p(0)), contact::operator-(p(3), p(2)));
-          break;
+        case kinds::FeaturePair::point_triangle: n = cross(p(2) - p(1), p(3) - p(1)); break;
+        case kinds::FeaturePair::edge_edge: n = cross(p(1) - p(0), p(3) - p(2)); break;
       }
       if (along(n)) return true;
     }
   }
+  for (int axis = 0; axis < Kind::dimension; ++axis)
+    if (certifies(Vec3{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0})) return true;
   return false;
+}
+
+/// True when a direction certifies that the kind's two primitives, with the rows of `frame`,
+/// stay farther than the frame's d apart (over [0, 1], or over [a, b] for frame.over(a, b)).
+template <class Kind, std::size_t N>
+bool primitives_separated(const ProjectionFrame<N>& frame) {
+  std::array<Side, Kind::points> side;
+  for (int i = 0; i < Kind::points; ++i) side[i] = i < Kind::first_points ? Side::first : Side::second;
+  return points_separated<Kind>(frame, side, Kind::features, Kind::features.size());
 }
 
 /// True when a direction certifies dist(A(t), B(t)) > d for every t in [0, 1] (then no t in
@@ -106,16 +213,15 @@ bool points_separated(const std::array<Vec3, N>& x, const std::array<Side, Kind:
 template <class Query>
 bool separated_beyond(const Query& q, double d) {
   using Kind = kinds::kind_of<Query>;
-  std::array<Side, Kind::points> side;
-  for (int i = 0; i < Kind::points; ++i) side[i] = i < Kind::first_points ? Side::first : Side::second;
-  return points_separated<Kind>(points3<double>(q), side, d, Kind::features, Kind::features.size());
+  return primitives_separated<Kind>(ProjectionFrame(points3<double>(q), d));
 }
 
 /// True when a direction certifies that feature pair f's two parts (its first point, or first
 /// edge for edge-edge, against the rest) stay farther than d apart over [0, 1]: then its term
-/// holds nowhere (the term's distance is that of the two parts' hulls, or more).
+/// holds nowhere (the term's distance is that of the two parts' hulls, or more). `frame`: the
+/// query's rows and d (ProjectionFrame).
 template <class Kind, std::size_t N>
-bool feature_separated(const std::array<Vec3, N>& x, const kinds::Feature& f, double d) {
+bool feature_separated(const ProjectionFrame<N>& frame, const kinds::Feature& f) {
   std::array<Side, Kind::points> side;
   side.fill(Side::none);
   const int first = f.pair == kinds::FeaturePair::edge_edge ? 2 : 1;
@@ -123,7 +229,7 @@ bool feature_separated(const std::array<Vec3, N>& x, const kinds::Feature& f, do
                     : f.pair == kinds::FeaturePair::point_edge ? 3
                                                                : 4;
   for (int k = 0; k < count; ++k) side[f.points[k]] = k < first ? Side::first : Side::second;
-  return points_separated<Kind>(x, side, d, std::array<kinds::Feature, 1>{f}, 1);
+  return points_separated<Kind>(frame, side, std::array<kinds::Feature, 1>{f}, 1);
 }
 
 }  // namespace exactccd::separation
