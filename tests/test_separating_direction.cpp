@@ -1,0 +1,177 @@
+// separation/separating_direction.hpp: the certified separating direction in plain doubles with
+// a static error bound. It must never certify a pair that comes within d: configurations at
+// distance exactly d (built from integers, so the distance is known exactly, with 53-bit
+// coordinates so that the projections round) at scales from the subnormal range to 2^960, at
+// rest and in common motion (then every cell of [0, 1] holds the tangency), over [0, 1] and
+// over random cells (ProjectionFrame::over); random moving point pairs with d the exact
+// distance at a double time, rounded up. And it must be useful: at a quarter of that distance
+// the same configurations are certified apart.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "separation/separating_direction.hpp"
+#include "separation/separation_terms.hpp"
+
+namespace exactccd {
+namespace {
+
+using separation::ProjectionFrame;
+
+/// v 2^k, exactly (v an integer below 2^53, the result a double).
+double scaled(std::int64_t v, int k) { return std::ldexp(static_cast<double>(v), k); }
+
+/// A configuration of one kind at distance exactly 3 s 2^k (s an integer): the gap lies along
+/// the direction (1, 2, 2), of length 3, and the primitives span directions orthogonal to it,
+/// (2, -1, 0) and (2, 0, -1); the closest points are interior (or the points themselves).
+struct Tangency {
+  std::vector<std::array<std::int64_t, 3>> first, second;  // integer points of A and of B
+};
+
+Tangency tangency(const std::string& kind, std::mt19937_64& rng, std::int64_t s, std::int64_t m) {
+  std::uniform_int_distribution<std::int64_t> base(-(std::int64_t{1} << 51), std::int64_t{1} << 51);
+  const std::array<std::int64_t, 3> p{base(rng), base(rng), base(rng)};
+  const auto at = [&](std::int64_t gap, std::int64_t u, std::int64_t v) {  // p + gap (1,2,2) + u (2,-1,0) + v (2,0,-1)
+    return std::array<std::int64_t, 3>{p[0] + gap + 2 * u + 2 * v, p[1] + 2 * gap - u, p[2] + 2 * gap - v};
+  };
+  if (kind == "vf") return {{at(s, 0, 0)}, {at(0, -m, -m), at(0, 2 * m, -m), at(0, -m, 2 * m)}};
+  if (kind == "ee") return {{at(0, -m, 0), at(0, m, 0)}, {at(s, 0, -m), at(s, 0, m)}};
+  if (kind == "pe") return {{at(s, 0, 0)}, {at(0, -m, 0), at(0, m, 0)}};
+  return {{at(s, 0, 0)}, {at(0, 0, 0)}};  // pp
+}
+
+/// The rows (all points at t0, then at t1) of a tangency scaled by 2^k, every point moving by
+/// the same integer vector w 2^k.
+template <class Kind>
+std::array<Vec3, 2 * Kind::points> rows_of(const Tangency& t, int k, const std::array<std::int64_t, 3>& w) {
+  std::array<Vec3, 2 * Kind::points> r;
+  int i = 0;
+  for (const auto* side : {&t.first, &t.second})
+    for (const auto& p : *side) {
+      r[i] = {scaled(p[0], k), scaled(p[1], k), scaled(p[2], k)};
+      r[i + Kind::points] = {scaled(p[0] + w[0], k), scaled(p[1] + w[1], k), scaled(p[2] + w[2], k)};
+      ++i;
+    }
+  return r;
+}
+
+template <class Kind>
+void check_tangencies(const std::string& kind) {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<std::int64_t> motion(-(std::int64_t{1} << 50), std::int64_t{1} << 50);
+  int certified_apart = 0, cases = 0;
+  for (const int k : {-1074, -1040, -700, -60, 0, 60, 700, 960}) {
+    for (int trial = 0; trial < 40; ++trial) {
+      // Spans of 2^20 keep the natural directions (cross products) exact, so the direction
+      // found is the exact normal and only the error bound stands between the computed gap and
+      // d |n|; spans of 2^40 round them.
+      const std::int64_t s = (std::int64_t{1} << 20) + trial, m = (std::int64_t{1} << (trial % 2 ? 20 : 40)) + 3 * trial;
+      const Tangency t = tangency(kind, rng, s, m);
+      const std::array<std::int64_t, 3> w = trial % 4 == 0 ? std::array<std::int64_t, 3>{0, 0, 0}
+                                                           : std::array<std::int64_t, 3>{motion(rng), motion(rng), motion(rng)};
+      const auto x = rows_of<Kind>(t, k, w);
+      const double d = scaled(3 * s, k);  // the exact distance at every t
+      const std::string where = kind + " k=" + std::to_string(k) + " trial " + std::to_string(trial);
+      const ProjectionFrame<2 * Kind::points> frame(x, d);
+      EXPECT_FALSE(separation::primitives_separated<Kind>(frame)) << where;
+      // The kind's own feature pair (feature 0) is the one at distance d.
+      EXPECT_FALSE(separation::feature_separated<Kind>(frame, Kind::features[0])) << where << " feature 0";
+      for (int cell = 0; cell < 8; ++cell) {
+        double a = unit(rng), b = unit(rng);
+        if (a > b) std::swap(a, b);
+        EXPECT_FALSE(separation::primitives_separated<Kind>(frame.over(a, b))) << where << " cell [" << a << ", " << b << "]";
+      }
+      // Useful: at a quarter of the distance the configuration at rest is certified apart.
+      if (w[0] == 0 && w[1] == 0 && w[2] == 0) {
+        ++cases;
+        certified_apart += separation::primitives_separated<Kind>(ProjectionFrame<2 * Kind::points>(x, d / 4));
+      }
+    }
+  }
+  EXPECT_EQ(certified_apart, cases) << kind << ": configurations at rest, d a quarter of their distance";
+}
+
+TEST(SeparatingDirection, NeverCertifiesExactTangenciesVertexFace) { check_tangencies<kinds::VertexFace>("vf"); }
+TEST(SeparatingDirection, NeverCertifiesExactTangenciesEdgeEdge) { check_tangencies<kinds::EdgeEdge>("ee"); }
+TEST(SeparatingDirection, NeverCertifiesExactTangenciesPointEdge) { check_tangencies<kinds::PointEdge>("pe"); }
+TEST(SeparatingDirection, NeverCertifiesExactTangenciesPointPoint) { check_tangencies<kinds::PointPoint>("pp"); }
+
+/// The least double whose square is at least q (q >= 0 rational, about 2^(2k) in size).
+double sqrt_up(const mpq_class& q, int k) {
+  mpq_class unit_sized = q;  // q 2^(-2k), exactly
+  if (k > 0) mpq_div_2exp(unit_sized.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(2 * k));
+  if (k < 0) mpq_mul_2exp(unit_sized.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-2 * k));
+  double r = std::ldexp(std::sqrt(unit_sized.get_d()), k);
+  if (!std::isfinite(r)) return r;
+  while (mpq_class(r) * mpq_class(r) < q) r = std::nextafter(r, std::numeric_limits<double>::infinity());
+  while (r > 0) {
+    const double below = std::nextafter(r, 0.0);
+    if (mpq_class(below) * mpq_class(below) < q) break;
+    r = below;
+  }
+  return r;
+}
+
+// Random point pairs with full-precision coordinates (moving, or at rest: then the natural
+// direction y - x rounds and the gap along it is d |n| up to rounding), d the exact distance at
+// a double time t rounded up: the pair is within d at t, so no direction may separate it over
+// [0, 1] or over a cell holding t.
+TEST(SeparatingDirection, NeverCertifiesRandomPointPairsWithinDistance) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0), unit(0.0, 1.0);
+  int checked = 0;
+  for (const int k : {-1070, -500, 0, 500, 1000}) {
+    for (int trial = 0; trial < 300; ++trial) {
+      std::array<Vec3, 4> x;
+      for (Vec3& p : x) p = {std::ldexp(coordinate(rng), k), std::ldexp(coordinate(rng), k), std::ldexp(coordinate(rng), k)};
+      if (trial % 3 == 1) x[3] = {x[2].x + std::ldexp(coordinate(rng), k - 30), x[2].y, x[2].z};  // short relative motion
+      if (trial % 3 == 2) x[2] = x[0], x[3] = x[1];  // at rest: the distance is d (up to d's rounding) at every t
+      const double t = unit(rng);
+      const auto at = [&](int i) {
+        return std::array<mpq_class, 3>{mpq_class(x[i].x) + mpq_class(t) * (mpq_class(x[i + 2].x) - mpq_class(x[i].x)),
+                                        mpq_class(x[i].y) + mpq_class(t) * (mpq_class(x[i + 2].y) - mpq_class(x[i].y)),
+                                        mpq_class(x[i].z) + mpq_class(t) * (mpq_class(x[i + 2].z) - mpq_class(x[i].z))};
+      };
+      const auto p = at(0), q = at(1);
+      mpq_class sq = 0;
+      for (int c = 0; c < 3; ++c) sq += (q[c] - p[c]) * (q[c] - p[c]);
+      const double d = sqrt_up(sq, k);
+      if (!std::isfinite(d)) continue;
+      ++checked;
+      const ProjectionFrame<4> frame(x, d);
+      EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(frame)) << "k=" << k << " trial " << trial;
+      const double a = t * unit(rng), b = t + (1 - t) * unit(rng);
+      EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(frame.over(a, b)))
+          << "k=" << k << " trial " << trial << " cell [" << a << ", " << b << "] t=" << t;
+    }
+  }
+  EXPECT_GT(checked, 1400);
+}
+
+// Coordinates at the ends of the double range: huge (the frame scales down), subnormal (it
+// scales up by more than 2^1000), a d far beyond the coordinates (d 2^s overflows: never
+// certified) and d = 0 with the points apart (certified).
+TEST(SeparatingDirection, ExtremeMagnitudes) {
+  const double big = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
+  const std::array<Vec3, 4> huge{Vec3{-big, 0, 0}, Vec3{big, 0, 0}, Vec3{-big, 1, 0}, Vec3{big, 1, 0}};
+  EXPECT_TRUE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(huge, big)));
+  const std::array<Vec3, 4> sub{Vec3{0, 0, 0}, Vec3{4 * tiny, 0, 0}, Vec3{0, tiny, 0}, Vec3{4 * tiny, tiny, 0}};
+  EXPECT_TRUE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, 2 * tiny)));
+  EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, 4 * tiny)));
+  EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, big)));
+  EXPECT_TRUE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, 0.0)));
+  const std::array<Vec3, 4> same{};
+  EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(same, 0.0)));
+}
+
+}  // namespace
+}  // namespace exactccd
