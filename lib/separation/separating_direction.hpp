@@ -11,14 +11,15 @@
 // rounding-mode switch). The bound holds in every rounding mode (each operation's relative
 // error is below e = 2^-52, a product's absolute error in the subnormal range below 2^-1074);
 // subnormals must be honoured (the callers' DefaultFpEnvironment clears flush-to-zero).
-//  1. Frame (ProjectionFrame). Every coordinate and d are multiplied by the power of two 2^s
-//     that brings the largest coordinate magnitude X into [1, 2): exact, except that a result
-//     in the subnormal range may be off by less than 2^-1074 (and d 2^s may overflow to
-//     infinity: then nothing certifies, rightly, since every gap is below 16 < d 2^s). The
-//     gap and d scale alike, so the question is unchanged. Then the first row o is subtracted
-//     from every row (|x - o| < 4, no overflow): y = x - o with a relative error below e. A
-//     common translation changes no gap. Y is the largest |y| (bounds now relative to the
-//     primitives' local extent, not to their distance from the origin).
+//  1. Frame (ProjectionFrame). When the largest coordinate magnitude X lies outside
+//     [2^-400, 2^400], every coordinate and d are multiplied by the power of two 2^s that
+//     brings X into [1, 2): exact, except that a result in the subnormal range may be off by
+//     less than 2^-1074 (and d 2^s may overflow to infinity: then nothing certifies, rightly,
+//     since every gap is then below 2^5, far below d 2^s). The gap and d scale alike, so the question is
+//     unchanged. Either way X <= 2^400 now. Then the first row o is subtracted from every row
+//     (|x - o| <= 2^401, no overflow): y = x - o with a relative error below e. A common
+//     translation changes no gap. Y is the largest |y| (bounds relative to the primitives'
+//     local extent, not to their distance from the origin).
 //  2. Direction. n is divided by its largest component magnitude (any rounding: the result is
 //     just another direction): that component is exactly +-1 and the others are in [-1, 1], so
 //     |n|_1 <= 3 and 1 <= n.n <= 3.
@@ -38,8 +39,9 @@
 //     g > (1 + e) (2E + fl(d' r) (1 + 2^-49) + 2^-1070), which the computed
 //     T = fl(fl(fl(2E + fl(d' r)) + 2^-1060) (1 + 2^-47)) is at least (three roundings cost
 //     at most 3e, and 2^-47 - 3e > 2^-52 + 2^-49 + 2^-100). The test is g > T; an infinite
-//     T (overflow of d') never certifies, and nothing else is near overflow (every |y| < 4,
-//     every |p| < 12, E < 2^-45).
+//     T (overflow of d') never certifies, and nothing else is near overflow (every |y| and
+//     every difference of rows below 2^402, a natural direction's components below 2^806
+//     before it is normalised, every |p| < 2^404, E < 2^355).
 // Directions tried: for each of the kind's feature pairs in order (the primitives' own pair
 // first) its natural direction at t0 and at t1 (point-point: y - x; point-edge: e x (r x e),
 // the perpendicular from the line to the point; point-triangle: the normal; edge-edge:
@@ -97,20 +99,28 @@ struct ProjectionFrame {
   /// The frame of rows `x` (finite doubles) and the minimum distance d >= 0 (finite).
   ProjectionFrame(const std::array<Vec3, N>& x, double min_distance) {
     double largest = 0;
-    for (const Vec3& p : x) largest = std::max({largest, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    for (const Vec3& p : x) largest = std::max(largest, std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
     if (!(largest > 0)) return;
-    const int s = -binary_exponent(largest);  // largest 2^s in [1, 2); s in [-1023, 1074]
-    // 2^s as two normal double factors (2^1074 is not a double), applied in turn.
-    const int k = std::clamp(s, -1022, 1000);
-    const double first = power_of_two(k), second = power_of_two(s - k);
-    const auto scale = [&](double v) { return (v * first) * second; };
-    const Vec3 o{scale(x[0].x), scale(x[0].y), scale(x[0].z)};
-    double extent = 0;
-    for (std::size_t i = 0; i < N; ++i) {
-      y[i] = {scale(x[i].x) - o.x, scale(x[i].y) - o.y, scale(x[i].z) - o.z};
-      extent = std::max({extent, std::fabs(y[i].x), std::fabs(y[i].y), std::fabs(y[i].z)});
+    // Scaled only outside [2^-400, 2^400] (step 1 of the header), by 2^s: largest 2^s in [1, 2),
+    // s in [-1023, 1074], as two normal double factors (2^1074 is not a double).
+    double first = 1, second = 1;
+    if (!(largest >= 0x1p-400 && largest <= 0x1p400)) {
+      const int s = -binary_exponent(largest);
+      const int k = std::clamp(s, -1022, 1000);
+      first = power_of_two(k);
+      second = power_of_two(s - k);
     }
-    d = scale(min_distance);
+    const auto scale = [&](double v) { return (v * first) * second; };
+    if (first == 1 && second == 1) {
+      for (std::size_t i = 0; i < N; ++i) y[i] = {x[i].x - x[0].x, x[i].y - x[0].y, x[i].z - x[0].z};
+      d = min_distance;
+    } else {
+      const Vec3 o{scale(x[0].x), scale(x[0].y), scale(x[0].z)};
+      for (std::size_t i = 0; i < N; ++i) y[i] = {scale(x[i].x) - o.x, scale(x[i].y) - o.y, scale(x[i].z) - o.z};
+      d = scale(min_distance);
+    }
+    double extent = 0;
+    for (const Vec3& p : y) extent = std::max(extent, std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
     this->extent = extent;
     error = extent * 0x1p-48 + 0x1p-1060;
     usable = true;
@@ -147,21 +157,28 @@ bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Ki
   constexpr int P = Kind::points;
   if (!frame.usable) return false;
   const std::array<Vec3, N>& y = frame.y;
+  // The rows of each set (at t0 and at t1); each set has at least one point.
+  std::array<std::size_t, N> first_rows{}, second_rows{};
+  std::size_t firsts = 0, seconds = 0;
+  for (int i = 0; i < 2 * P; ++i) {
+    if (side[i % P] == Side::first) first_rows[firsts++] = static_cast<std::size_t>(i);
+    if (side[i % P] == Side::second) second_rows[seconds++] = static_cast<std::size_t>(i);
+  }
+  if (firsts == 0 || seconds == 0) return false;
   // Certifies the gap along the normalised direction n (header, step 4).
   const auto certifies = [&](const Vec3& n) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    double a_lo = inf, a_hi = -inf, b_lo = inf, b_hi = -inf;
-    for (int i = 0; i < 2 * P; ++i) {
-      if (side[i % P] == Side::none) continue;
-      const Vec3& v = y[static_cast<std::size_t>(i)];
-      const double p = (n.x * v.x + n.y * v.y) + n.z * v.z;
-      if (side[i % P] == Side::first) {
-        a_lo = std::min(a_lo, p);
-        a_hi = std::max(a_hi, p);
-      } else {
-        b_lo = std::min(b_lo, p);
-        b_hi = std::max(b_hi, p);
-      }
+    const auto project = [&](std::size_t i) { return (n.x * y[i].x + n.y * y[i].y) + n.z * y[i].z; };
+    double a_lo = project(first_rows[0]), a_hi = a_lo;
+    for (std::size_t k = 1; k < firsts; ++k) {
+      const double p = project(first_rows[k]);
+      a_lo = std::min(a_lo, p);
+      a_hi = std::max(a_hi, p);
+    }
+    double b_lo = project(second_rows[0]), b_hi = b_lo;
+    for (std::size_t k = 1; k < seconds; ++k) {
+      const double p = project(second_rows[k]);
+      b_lo = std::min(b_lo, p);
+      b_hi = std::max(b_hi, p);
     }
     const double r = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
     const double threshold = ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
