@@ -82,14 +82,36 @@ inline contact::Poly<I, 5> derivative(const Poly6<I>& p) {
   return r;
 }
 
+/// A term's polynomial with its derivative (formed once per query, used on every cell).
+struct Sloped {
+  Poly6<I> p;
+  contact::Poly<I, 5> slope;
+};
+
+/// A term (separation_terms.hpp) with the derivatives of its polynomials.
+struct SlopedTerm {
+  Sloped distance;
+  std::array<Sloped, 4> positive;
+  int positives = 0;
+};
+
+inline SlopedTerm with_slopes(const Term<I>& term) {
+  SlopedTerm r;
+  r.distance = {term.distance, derivative(term.distance)};
+  for (int k = 0; k < term.positives; ++k) r.positive[k] = {term.positive[k], derivative(term.positive[k])};
+  r.positives = term.positives;
+  return r;
+}
+
 /// An enclosure of p over the cell [a, b] (t = [a, b], m its midpoint): where p' has a certain
 /// sign on the cell, p is monotone there and its range is the hull of p(a) and p(b); otherwise
 /// the mean-value form p(m) + p'(t) (t - m) intersected with Horner's scheme over t (both
 /// enclose the range; the first shrinks with the cell's width squared near a root, where
 /// Horner's scheme over power-basis coefficients suffers from cancellation).
-inline I range(const Poly6<I>& p, double a, double b) {
+inline I range(const Sloped& sloped, double a, double b) {
+  const Poly6<I>& p = sloped.p;
   const I t(a, b);
-  const I slope = evaluate(derivative(p), t);
+  const I slope = evaluate(sloped.slope, t);
   if (certain_sign(slope) != 0) {
     const I pa = evaluate(p, I(a)), pb = evaluate(p, I(b));
     return I(std::min(pa.inf(), pb.inf()), std::max(pa.sup(), pb.sup()));
@@ -101,7 +123,7 @@ inline I range(const Poly6<I>& p, double a, double b) {
 }
 
 /// The term holds nowhere in the cell [a, b] (certainly).
-inline bool excluded(const Term<I>& term, double a, double b) {
+inline bool excluded(const SlopedTerm& term, double a, double b) {
   if (range(term.distance, a, b).inf() > 0) return true;
   for (int k = 0; k < term.positives; ++k)
     if (range(term.positive[k], a, b).sup() <= 0) return true;
@@ -109,10 +131,10 @@ inline bool excluded(const Term<I>& term, double a, double b) {
 }
 
 /// The term holds at t (certainly): f <= 0 and every g > 0.
-inline bool holds(const Term<I>& term, const I& t) {
-  if (evaluate(term.distance, t).sup() > 0) return false;
+inline bool holds(const SlopedTerm& term, const I& t) {
+  if (evaluate(term.distance.p, t).sup() > 0) return false;
   for (int k = 0; k < term.positives; ++k)
-    if (evaluate(term.positive[k], t).inf() <= 0) return false;
+    if (evaluate(term.positive[k].p, t).inf() <= 0) return false;
   return true;
 }
 
@@ -238,31 +260,43 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
   using namespace interval_detail;
   using Kind = kinds::kind_of<Query>;
   const CGAL::Protect_FPU_rounding<true> upward;
-  // Feature pairs whose parts a direction keeps farther than d apart never hold: no term.
   const auto xd = points3<double>(q);
-  std::array<bool, Kind::features.size()> use{};
-  std::vector<int> feature_of_term;
   const ProjectionFrame frame(xd, d);
-  for (std::size_t f = 0; f < Kind::features.size(); ++f)
-    if ((use[f] = !feature_separated<Kind>(frame, Kind::features[f]))) feature_of_term.push_back(static_cast<int>(f));
-  if (feature_of_term.empty()) return {true, std::nullopt};
-  const auto x = points3<I>(q);
-  const std::vector<Term<I>> terms = separation::terms<Kind>(x, I(d) * I(d), use.data());
-  IntervalVerdict undecided{};
-  for (std::size_t f = 0; f < use.size(); ++f) undecided.use[f] = use[f];
-  // 1. t = 0.
-  bool all_fail_at_zero = true;
-  for (const Term<I>& term : terms) {
-    if (holds(term, I(0))) return {true, TimeInterval{0.0, 0.0}};
-    all_fail_at_zero = all_fail_at_zero && excluded(term, 0.0, 0.0);
-  }
-  if (!all_fail_at_zero) return undecided;
-  // 2.-4. The walk over the cells, with the terms whose bits are set in `initial`.
   std::array<Side, Kind::points> all_sides;
   for (int i = 0; i < Kind::points; ++i) all_sides[i] = i < Kind::first_points ? Side::first : Side::second;
+  // The terms are built when the walk first meets a cell that no direction separates (0.
+  // below); a query whose cells down to kSeparationDepth are all separated needs none.
+  std::array<bool, Kind::features.size()> use{};
+  std::vector<int> feature_of_term;
+  std::vector<SlopedTerm> terms;
+  bool built = false;
+  IntervalVerdict undecided{};
+  // Builds the terms; with `at_zero`, decides t = 0 (step 1): a verdict when that decides the
+  // query (or leaves it undecided), nothing when every term certainly fails at 0.
+  const auto build = [&](bool at_zero) -> std::optional<IntervalVerdict> {
+    built = true;
+    // Feature pairs whose parts a direction keeps farther than d apart never hold: no term.
+    for (std::size_t f = 0; f < Kind::features.size(); ++f)
+      if ((use[f] = !feature_separated<Kind>(frame, Kind::features[f]))) feature_of_term.push_back(static_cast<int>(f));
+    for (std::size_t f = 0; f < use.size(); ++f) undecided.use[f] = use[f];
+    if (feature_of_term.empty()) return IntervalVerdict{true, std::nullopt};
+    const auto x = points3<I>(q);
+    for (const Term<I>& term : separation::terms<Kind>(x, I(d) * I(d), use.data())) terms.push_back(with_slopes(term));
+    if (!at_zero) return std::nullopt;
+    // 1. t = 0.
+    bool all_fail_at_zero = true;
+    for (const SlopedTerm& term : terms) {
+      if (holds(term, I(0))) return IntervalVerdict{true, TimeInterval{0.0, 0.0}};
+      all_fail_at_zero = all_fail_at_zero && excluded(term, 0.0, 0.0);
+    }
+    if (!all_fail_at_zero) return undecided;
+    return std::nullopt;
+  };
+  // 2.-4. The walk over the cells, with the terms whose bits are set in `initial`.
   const auto walk = [&](std::uint32_t initial) -> IntervalVerdict {
     // 2. Cells in time order (a stack of right halves).
     constexpr int kMaxDepth = 48;
+    constexpr int kSeparationDepth = 3;
     // Each cell carries the terms not excluded on its parent (a bit per term): a term excluded
     // on a cell holds nowhere in it, so nowhere in its halves, and is not examined again there.
     struct Cell {
@@ -276,8 +310,26 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
     stack[top++] = {0.0, tmax, 0, initial};
     while (top > 0) {
       const Cell cell = stack[--top];
-      // A direction keeping the primitives apart over the cell excludes every term at once.
-      if (cell.depth > 0 && points_separated<Kind>(frame.over(cell.a, cell.b), all_sides, Kind::features, 1)) continue;
+      // 0. A direction keeping the primitives apart over the cell excludes every term at once:
+      // before the terms exist every direction is tried, down to kSeparationDepth; then only
+      // the primitives' own pair's (cheap, and the one that separates most cells).
+      const ProjectionFrame cell_frame = frame.over(cell.a, cell.b);
+      if (cell.depth > 0 && (built ? points_separated<Kind>(cell_frame, all_sides, Kind::features, 1)
+                                   : primitives_separated<Kind>(cell_frame)))
+        continue;
+      if (!built) {
+        if (cell.depth < kSeparationDepth) {
+          const double m = cell.a + (cell.b - cell.a) / 2;
+          if (cell.a < m && m < cell.b) {
+            stack[top++] = {m, cell.b, cell.depth + 1, cell.open};
+            stack[top++] = {cell.a, m, cell.depth + 1, cell.open};
+            continue;
+          }
+        }
+        // [0, cell.a] is free (its cells were separated), so t = 0 needs deciding only when
+        // this cell starts at 0.
+        if (const auto verdict = build(cell.a == 0)) return *verdict;
+      }
       int alive = -1, alive_count = 0;
       std::uint32_t open = 0;
       for (std::size_t i = 0; i < terms.size(); ++i)
@@ -289,13 +341,13 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
       if (alive_count == 0) continue;  // free of contact
       if (alive_count == 1) {
         // 3. One term left: a simple sign change of f with every g positive?
-        const Term<I>& term = terms[alive];
+        const SlopedTerm& term = terms[alive];
         bool g_positive = true;
         for (int k = 0; k < term.positives && g_positive; ++k)
           g_positive = range(term.positive[k], cell.a, cell.b).inf() > 0;
-        if (g_positive && certain_sign(evaluate(term.distance, I(cell.a))) > 0 &&
-            certain_sign(evaluate(term.distance, I(cell.b))) < 0 &&
-            certain_sign(evaluate(derivative(term.distance), I(cell.a, cell.b))) != 0) {
+        if (g_positive && certain_sign(evaluate(term.distance.p, I(cell.a))) > 0 &&
+            certain_sign(evaluate(term.distance.p, I(cell.b))) < 0 &&
+            certain_sign(evaluate(term.distance.slope, I(cell.a, cell.b))) != 0) {
           if (!want_toi) return {true, TimeInterval{cell.a, cell.b}};
           const kinds::Feature& feature = Kind::features[feature_of_term[alive]];
           // Signs at doubles in double-double arithmetic, which needs round-to-nearest (restored
@@ -372,9 +424,9 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
     }
     return {true, std::nullopt};  // 4. every cell of [0, tmax] is free
   };
-  const std::uint32_t all = (std::uint32_t{1} << terms.size()) - 1;
-  const IntervalVerdict verdict = walk(all);
+  const IntervalVerdict verdict = walk(~std::uint32_t{0});  // every term (bits beyond them unused)
   if (verdict.decided) return verdict;
+  const std::uint32_t all = (std::uint32_t{1} << terms.size()) - 1;
   // 5. Coplanar queries: when every point lies in one fixed plane at t0 and at t1 (so at every
   // t), the point-triangle and edge-edge terms never hold first at a t > 0, and the walk runs
   // again without them. Their normal (n, or w) is normal to the plane or zero, and the vector
