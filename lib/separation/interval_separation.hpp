@@ -5,9 +5,16 @@
 // bounds, which never certify; the caller's DefaultFpEnvironment has cleared flush-to-zero).
 //
 // A term is *excluded* on a time cell when its f is certainly > 0 or one of its g certainly
-// <= 0 on the whole cell: it holds nowhere there. The stage
+// <= 0 on the whole cell: it holds nowhere there. A cell is also free of contact when a
+// direction separates the primitives over it (separating_direction.hpp: the rows at the cell's
+// ends, ProjectionFrame::over). The stage
+//  0. walks the cells in time order first with directions alone (every direction, halving down
+//     to depth 3, i.e. eighths of [0, tmax]); the terms are built only at the first cell no
+//     direction separates (most near misses never need them), and step 1 runs only if that
+//     cell starts at 0 (otherwise [0, a] is free);
 //  1. decides t = 0: a term certainly holding (f <= 0, every g > 0) gives TOI [0, 0];
-//  2. walks the cells of [0, tmax] in time order, splitting a cell while a term is not excluded;
+//  2. walks the cells of [0, tmax] in time order, splitting a cell while a term is not excluded
+//     (and the primitives' own pair's direction does not separate it);
 //     cells where every term is excluded are free of contact;
 //  3. in the first cell where one term i is left, if its g are certainly > 0 on the cell, its f
 //     certainly > 0 at the cell's start a and < 0 at its end b, and f' certainly != 0 on the
@@ -17,6 +24,9 @@
 //     to two consecutive doubles, the tight TOI (t* is not a double: f_i has a nonzero sign at
 //     every double examined);
 //  4. if all of [0, tmax] is free: no collision;
+//  For the answer alone (no TOI asked), a term certainly holding at a cell's midpoint, or the
+//  single sign change of step 3, ends the walk with "collides" (and an enclosure of the TOI,
+//  not the tightest: no narrowing);
 //  5. if the walk is undecided and every point lies in one plane, walks again without the
 //     point-triangle and edge-edge terms (the argument at step 5 below).
 // The signs of f at the doubles examined in step 3 are certified in double-double arithmetic
