@@ -325,7 +325,7 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
       // the primitives' own pair's (cheap, and the one that separates most cells).
       const ProjectionFrame cell_frame = frame.over(cell.a, cell.b);
       if (cell.depth > 0 && (built ? points_separated<Kind>(cell_frame, all_sides, Kind::features, 1)
-                                   : primitives_separated<Kind>(cell_frame)))
+                                   : primitives_separated<Kind>(cell_frame, false)))
         continue;
       if (!built) {
         if (cell.depth < kSeparationDepth) {

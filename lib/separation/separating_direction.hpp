@@ -153,7 +153,8 @@ struct ProjectionFrame {
 /// (the header's argument). False: only "not certified".
 template <class Kind, std::size_t N, std::size_t F>
 bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Kind::points>& side,
-                      const std::array<kinds::Feature, F>& features, std::size_t feature_count) {
+                      const std::array<kinds::Feature, F>& features, std::size_t feature_count,
+                      bool both_ends = true) {
   constexpr int P = Kind::points;
   if (!frame.usable) return false;
   const std::array<Vec3, N>& y = frame.y;
@@ -190,10 +191,10 @@ bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Ki
     if (!(m > 0 && m <= std::numeric_limits<double>::max())) return false;  // zero or not finite
     return certifies(Vec3{n.x / m, n.y / m, n.z / m});
   };
-  for (std::size_t k = 0; k < feature_count; ++k) {
-    const kinds::Feature& f = features[k];
-    if (Kind::dimension == 2 && f.pair == kinds::FeaturePair::edge_edge) continue;  // n = z axis
-    for (int at = 0; at < 2 * P; at += P) {
+  for (int at = 0; at < (both_ends ? 2 * P : P); at += P) {
+    for (std::size_t k = 0; k < feature_count; ++k) {
+      const kinds::Feature& f = features[k];
+      if (Kind::dimension == 2 && f.pair == kinds::FeaturePair::edge_edge) continue;  // n = z axis
       using contact::cross;
       using contact::operator-;
       const auto p = [&](int j) { return y[static_cast<std::size_t>(f.points[j] + at)]; };
@@ -219,10 +220,10 @@ bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Ki
 /// True when a direction certifies that the kind's two primitives, with the rows of `frame`,
 /// stay farther than the frame's d apart (over [0, 1], or over [a, b] for frame.over(a, b)).
 template <class Kind, std::size_t N>
-bool primitives_separated(const ProjectionFrame<N>& frame) {
+bool primitives_separated(const ProjectionFrame<N>& frame, bool both_ends = true) {
   std::array<Side, Kind::points> side;
   for (int i = 0; i < Kind::points; ++i) side[i] = i < Kind::first_points ? Side::first : Side::second;
-  return points_separated<Kind>(frame, side, Kind::features, Kind::features.size());
+  return points_separated<Kind>(frame, side, Kind::features, Kind::features.size(), both_ends);
 }
 
 /// True when a direction certifies dist(A(t), B(t)) > d for every t in [0, 1] (then no t in
