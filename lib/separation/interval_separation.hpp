@@ -340,6 +340,11 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
         // this cell starts at 0.
         if (const auto verdict = build(cell.a == 0)) return *verdict;
       }
+      if (!want_toi) {  // a term certainly holding at the cell's midpoint: a collision there or earlier
+        const double m = cell.a + (cell.b - cell.a) / 2;
+        for (std::size_t i = 0; i < terms.size(); ++i)
+          if ((cell.open >> i & 1) && holds(terms[i], I(m))) return {true, TimeInterval{0.0, m}};
+      }
       int alive = -1, alive_count = 0;
       std::uint32_t open = 0;
       for (std::size_t i = 0; i < terms.size(); ++i)
@@ -426,9 +431,6 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
       if (cell.depth >= kMaxDepth) return undecided;
       const double m = cell.a + (cell.b - cell.a) / 2;
       if (!(cell.a < m && m < cell.b)) return undecided;
-      if (!want_toi)  // a term certainly holding at m: a collision, at m or earlier
-        for (std::size_t i = 0; i < terms.size(); ++i)
-          if ((open >> i & 1) && holds(terms[i], I(m))) return {true, TimeInterval{0.0, m}};
       stack[top++] = {m, cell.b, cell.depth + 1, open};  // right half, examined after the left one
       stack[top++] = {cell.a, m, cell.depth + 1, open};
     }
