@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "exact/exact_ccd.hpp"
@@ -161,6 +162,51 @@ TEST(MinSeparation, FilteredEqualsExactInAPlane) {
               static_cast<unsigned long long>(stages.separating_direction),
               static_cast<unsigned long long>(stages.interval), static_cast<unsigned long long>(stages.integer),
               static_cast<unsigned long long>(stages.exact));
+}
+
+/// Queries in the tilted plane x + y + z = 0 (dyadic coordinates: every point exactly in it),
+/// touching at t = 0 (the point inside the triangle, or the edges crossing), at tiny d: the
+/// interval stage cannot decide t = 0 there (h's enclosure is wider than d |n|), and must not
+/// walk on without the point-triangle and edge-edge terms (step 5 needs t = 0 ruled out). A
+/// review found filtered "none" against exact [0, 0] on the first query below.
+TEST(MinSeparation, FilteredEqualsExactInATiltedPlaneTouchingAtZero) {
+  const CcdParams tiny{1e-16, 1.0};
+  const VertexFaceQuery found = from_rows<VertexFaceQuery>(std::array<Vec3, 8>{
+      Vec3{0.5, 0.5, -1.0}, Vec3{0.1, 0.1, -0.2}, Vec3{0.9, 0.4, -1.3}, Vec3{0.4, 0.9, -1.3},
+      Vec3{0.5, 0.5, -1.0}, Vec3{0.1, 0.1, -0.2}, Vec3{0.9, 0.4, -1.3}, Vec3{0.4, 0.9, -1.3}});
+  EXPECT_EQ(show(toi(found, tiny, Method::filtered)), show(toi(found, tiny, Method::exact)));
+  EXPECT_EQ(show(toi(found, tiny, Method::exact)), "[0, 0]");
+  std::mt19937_64 rng(43);
+  std::uniform_int_distribution<int> grid(-1024, 1024);
+  const auto in_plane = [&] {
+    const double x = grid(rng) / 1024.0, y = grid(rng) / 1024.0;
+    return Vec3{x, y, -(x + y)};
+  };
+  const auto plus = [](const Vec3& u, const Vec3& v, double s) { return Vec3{u.x + s * v.x, u.y + s * v.y, u.z + s * v.z}; };
+  const std::vector<double> distances{1e-16, 1e-30, std::ldexp(1.0, -1074), 0x1p-20};
+  int compared = 0;
+  for (int i = 0; i < 120; ++i) {
+    const Vec3 a = in_plane(), b = in_plane(), c = in_plane();
+    const Vec3 ab{b.x - a.x, b.y - a.y, b.z - a.z}, ac{c.x - a.x, c.y - a.y, c.z - a.z};
+    const Vec3 inside = plus(plus(a, ab, 0.25), ac, 0.25);  // exact: dyadic with few bits
+    const bool moving = i % 2 == 1;
+    const Vec3 shift = moving ? in_plane() : Vec3{};
+    const auto moved = [&](const Vec3& v) { return plus(v, shift, 1.0); };
+    const CcdParams p{distances[i % distances.size()], i % 3 == 0 ? 0.5 : 1.0};
+    const VertexFaceQuery vf = from_rows<VertexFaceQuery>(
+        std::array<Vec3, 8>{inside, a, b, c, moved(inside), a, b, c});
+    // Edges crossing at t0: a-b against the segment from c through the point inside.
+    const Vec3 far = plus(c, Vec3{inside.x - c.x, inside.y - c.y, inside.z - c.z}, 4.0);
+    const EdgeEdgeQuery ee = from_rows<EdgeEdgeQuery>(std::array<Vec3, 8>{a, b, c, far, a, b, moved(c), moved(far)});
+    for (const auto& [name, f, e] : {std::tuple{"vf", toi(vf, p, Method::filtered), toi(vf, p, Method::exact)},
+                                     std::tuple{"ee", toi(ee, p, Method::filtered), toi(ee, p, Method::exact)}}) {
+      EXPECT_EQ(show(f), show(e)) << name << " query " << i << " d " << p.min_distance;
+      ++compared;
+    }
+    EXPECT_EQ(ccd(vf, p, Method::filtered), toi(vf, p, Method::exact).has_value()) << "vf query " << i;
+    EXPECT_EQ(ccd(ee, p, Method::filtered), toi(ee, p, Method::exact).has_value()) << "ee query " << i;
+  }
+  EXPECT_EQ(compared, 240);
 }
 
 /// The largest extent of a query's bounding box (all its rows).

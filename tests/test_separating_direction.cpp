@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cfenv>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -25,6 +26,20 @@ namespace exactccd {
 namespace {
 
 using separation::ProjectionFrame;
+
+/// The caller's rounding mode for the library calls of a test (the proof holds in each).
+class RoundingMode : public ::testing::TestWithParam<int> {
+ protected:
+  /// f() with the parameter's rounding mode installed, the previous one restored after.
+  template <class F>
+  auto in_mode(F&& f) {
+    const int before = std::fegetround();
+    std::fesetround(GetParam());
+    const auto result = f();
+    std::fesetround(before);
+    return result;
+  }
+};
 
 /// v 2^k, exactly (v an integer below 2^53, the result a double).
 double scaled(std::int64_t v, int k) { return std::ldexp(static_cast<double>(v), k); }
@@ -63,8 +78,8 @@ std::array<Vec3, 2 * Kind::points> rows_of(const Tangency& t, int k, const std::
   return r;
 }
 
-template <class Kind>
-void check_tangencies(const std::string& kind) {
+template <class Kind, class InMode>
+void check_tangencies(const std::string& kind, InMode&& in_mode) {
   std::mt19937_64 rng(2026);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::uniform_int_distribution<std::int64_t> motion(-(std::int64_t{1} << 50), std::int64_t{1} << 50);
@@ -81,29 +96,34 @@ void check_tangencies(const std::string& kind) {
       const auto x = rows_of<Kind>(t, k, w);
       const double d = scaled(3 * s, k);  // the exact distance at every t
       const std::string where = kind + " k=" + std::to_string(k) + " trial " + std::to_string(trial);
-      const ProjectionFrame<2 * Kind::points> frame(x, d);
-      EXPECT_FALSE(separation::primitives_separated<Kind>(frame)) << where;
+      const auto frame = in_mode([&] { return ProjectionFrame<2 * Kind::points>(x, d); });
+      EXPECT_FALSE(in_mode([&] { return separation::primitives_separated<Kind>(frame); })) << where;
       // The kind's own feature pair (feature 0) is the one at distance d.
-      EXPECT_FALSE(separation::feature_separated<Kind>(frame, Kind::features[0])) << where << " feature 0";
+      EXPECT_FALSE(in_mode([&] { return separation::feature_separated<Kind>(frame, Kind::features[0]); }))
+          << where << " feature 0";
       for (int cell = 0; cell < 8; ++cell) {
         double a = unit(rng), b = unit(rng);
         if (a > b) std::swap(a, b);
-        EXPECT_FALSE(separation::primitives_separated<Kind>(frame.over(a, b))) << where << " cell [" << a << ", " << b << "]";
+        EXPECT_FALSE(in_mode([&] { return separation::primitives_separated<Kind>(frame.over(a, b)); }))
+            << where << " cell [" << a << ", " << b << "]";
       }
       // Useful: at a quarter of the distance the configuration at rest is certified apart.
       if (w[0] == 0 && w[1] == 0 && w[2] == 0) {
         ++cases;
-        certified_apart += separation::primitives_separated<Kind>(ProjectionFrame<2 * Kind::points>(x, d / 4));
+        certified_apart += in_mode(
+            [&] { return separation::primitives_separated<Kind>(ProjectionFrame<2 * Kind::points>(x, d / 4)); });
       }
     }
   }
   EXPECT_EQ(certified_apart, cases) << kind << ": configurations at rest, d a quarter of their distance";
 }
 
-TEST(SeparatingDirection, NeverCertifiesExactTangenciesVertexFace) { check_tangencies<kinds::VertexFace>("vf"); }
-TEST(SeparatingDirection, NeverCertifiesExactTangenciesEdgeEdge) { check_tangencies<kinds::EdgeEdge>("ee"); }
-TEST(SeparatingDirection, NeverCertifiesExactTangenciesPointEdge) { check_tangencies<kinds::PointEdge>("pe"); }
-TEST(SeparatingDirection, NeverCertifiesExactTangenciesPointPoint) { check_tangencies<kinds::PointPoint>("pp"); }
+#define EXACTCCD_IN_MODE [this](auto&& f) { return in_mode(f); }
+TEST_P(RoundingMode, NeverCertifiesExactTangenciesVertexFace) { check_tangencies<kinds::VertexFace>("vf", EXACTCCD_IN_MODE); }
+TEST_P(RoundingMode, NeverCertifiesExactTangenciesEdgeEdge) { check_tangencies<kinds::EdgeEdge>("ee", EXACTCCD_IN_MODE); }
+TEST_P(RoundingMode, NeverCertifiesExactTangenciesPointEdge) { check_tangencies<kinds::PointEdge>("pe", EXACTCCD_IN_MODE); }
+TEST_P(RoundingMode, NeverCertifiesExactTangenciesPointPoint) { check_tangencies<kinds::PointPoint>("pp", EXACTCCD_IN_MODE); }
+#undef EXACTCCD_IN_MODE
 
 /// The least double whose square is at least q (q >= 0 rational, about 2^(2k) in size).
 double sqrt_up(const mpq_class& q, int k) {
@@ -125,7 +145,7 @@ double sqrt_up(const mpq_class& q, int k) {
 // direction y - x rounds and the gap along it is d |n| up to rounding), d the exact distance at
 // a double time t rounded up: the pair is within d at t, so no direction may separate it over
 // [0, 1] or over a cell holding t.
-TEST(SeparatingDirection, NeverCertifiesRandomPointPairsWithinDistance) {
+TEST_P(RoundingMode, NeverCertifiesRandomPointPairsWithinDistance) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> coordinate(-1.0, 1.0), unit(0.0, 1.0);
   int checked = 0;
@@ -147,10 +167,11 @@ TEST(SeparatingDirection, NeverCertifiesRandomPointPairsWithinDistance) {
       const double d = sqrt_up(sq, k);
       if (!std::isfinite(d)) continue;
       ++checked;
-      const ProjectionFrame<4> frame(x, d);
-      EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(frame)) << "k=" << k << " trial " << trial;
+      const auto frame = in_mode([&] { return ProjectionFrame<4>(x, d); });
+      EXPECT_FALSE(in_mode([&] { return separation::primitives_separated<kinds::PointPoint>(frame); }))
+          << "k=" << k << " trial " << trial;
       const double a = t * unit(rng), b = t + (1 - t) * unit(rng);
-      EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(frame.over(a, b)))
+      EXPECT_FALSE(in_mode([&] { return separation::primitives_separated<kinds::PointPoint>(frame.over(a, b)); }))
           << "k=" << k << " trial " << trial << " cell [" << a << ", " << b << "] t=" << t;
     }
   }
@@ -160,18 +181,48 @@ TEST(SeparatingDirection, NeverCertifiesRandomPointPairsWithinDistance) {
 // Coordinates at the ends of the double range: huge (the frame scales down), subnormal (it
 // scales up by more than 2^1000), a d far beyond the coordinates (d 2^s overflows: never
 // certified) and d = 0 with the points apart (certified).
-TEST(SeparatingDirection, ExtremeMagnitudes) {
+TEST_P(RoundingMode, ExtremeMagnitudes) {
   const double big = std::numeric_limits<double>::max(), tiny = std::numeric_limits<double>::denorm_min();
   const std::array<Vec3, 4> huge{Vec3{-big, 0, 0}, Vec3{big, 0, 0}, Vec3{-big, 1, 0}, Vec3{big, 1, 0}};
-  EXPECT_TRUE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(huge, big)));
+  const auto separated = [&](const std::array<Vec3, 4>& x, double d) {
+    return in_mode([&] { return separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(x, d)); });
+  };
+  EXPECT_TRUE(separated(huge, big));
   const std::array<Vec3, 4> sub{Vec3{0, 0, 0}, Vec3{4 * tiny, 0, 0}, Vec3{0, tiny, 0}, Vec3{4 * tiny, tiny, 0}};
-  EXPECT_TRUE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, 2 * tiny)));
-  EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, 4 * tiny)));
-  EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, big)));
-  EXPECT_TRUE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(sub, 0.0)));
+  EXPECT_TRUE(separated(sub, 2 * tiny));
+  EXPECT_FALSE(separated(sub, 4 * tiny));
+  EXPECT_FALSE(separated(sub, big));
+  EXPECT_TRUE(separated(sub, 0.0));
   const std::array<Vec3, 4> same{};
-  EXPECT_FALSE(separation::primitives_separated<kinds::PointPoint>(ProjectionFrame<4>(same, 0.0)));
+  EXPECT_FALSE(separated(same, 0.0));
 }
+
+// A point-edge near miss at every scale: the point (0.52, 0.48, 0.001) u beside the middle of
+// the edge from 0 to (u, u, 0), at distance 0.028 u, d = u / 256. No axis separates (the
+// point's z is below d, its x and y within the edge's), nor the point-point directions (the
+// point projects between the ends); only the point-edge direction e x (r x e) does, and it must
+// be formed without overflow or underflow at every scale (r x e is normalised first; without
+// that it fails from about 2^345 and below 2^-355).
+TEST_P(RoundingMode, PointEdgeNearMissCertifiedAtEveryScale) {
+  for (int k = -1000; k <= 1000; k += 5) {
+    const double u = std::ldexp(1.0, k);
+    const Vec3 p{0.52 * u, 0.48 * u, 0.001 * u}, a{0, 0, 0}, b{u, u, 0};
+    const std::array<Vec3, 6> x{p, a, b, p, a, b};
+    EXPECT_TRUE(in_mode([&] { return separation::primitives_separated<kinds::PointEdge>(ProjectionFrame<6>(x, u / 256)); }))
+        << "scale 2^" << k;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SeparatingDirection, RoundingMode,
+                         ::testing::Values(FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                           switch (info.param) {
+                             case FE_UPWARD: return std::string("upward");
+                             case FE_DOWNWARD: return std::string("downward");
+                             case FE_TOWARDZERO: return std::string("towardzero");
+                             default: return std::string("nearest");
+                           }
+                         });
 
 }  // namespace
 }  // namespace exactccd

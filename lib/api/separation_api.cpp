@@ -131,7 +131,9 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& p, Method me
         if (counters) *counters += probe;  // one query, counted at the contact stage deciding it
         return TimeInterval{0.0, touch->hi};
       }
-      probe_used_gmp = probe.integer + probe.exact > 0;  // counted below, with the deciding stage
+      // Counted below, with the deciding stage; GMP or CGAL use (not the fixed-width integer
+      // stage, which allocates nothing) makes it an `integer` query.
+      probe_used_gmp = probe.integer + probe.exact > 0;
     }
     const separation::IntervalVerdict verdict = separation::interval_separation(q, p.min_distance, p.tmax, want_toi);
     if (verdict.decided) {

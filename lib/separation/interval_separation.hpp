@@ -280,6 +280,7 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
   std::vector<int> feature_of_term;
   std::vector<SlopedTerm> terms;
   bool built = false;
+  bool zero_undecided = false;  // step 1 could not decide t = 0
   IntervalVerdict undecided{};
   // Builds the terms; with `at_zero`, decides t = 0 (step 1): a verdict when that decides the
   // query (or leaves it undecided), nothing when every term certainly fails at 0.
@@ -299,7 +300,10 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
       if (holds(term, I(0))) return IntervalVerdict{true, TimeInterval{0.0, 0.0}};
       all_fail_at_zero = all_fail_at_zero && excluded(term, 0.0, 0.0);
     }
-    if (!all_fail_at_zero) return undecided;
+    if (!all_fail_at_zero) {
+      zero_undecided = true;  // step 5 needs t = 0 ruled out: the exact path answers
+      return undecided;
+    }
     return std::nullopt;
   };
   // 2.-4. The walk over the cells, with the terms whose bits are set in `initial`.
@@ -437,7 +441,7 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
     return {true, std::nullopt};  // 4. every cell of [0, tmax] is free
   };
   const IntervalVerdict verdict = walk(~std::uint32_t{0});  // every term (bits beyond them unused)
-  if (verdict.decided) return verdict;
+  if (verdict.decided || zero_undecided) return verdict;
   const std::uint32_t all = (std::uint32_t{1} << terms.size()) - 1;
   // 5. Coplanar queries: when every point lies in one fixed plane at t0 and at t1 (so at every
   // t), the point-triangle and edge-edge terms never hold first at a t > 0, and the walk runs

@@ -14,8 +14,9 @@
 //  1. Frame (ProjectionFrame). When the largest coordinate magnitude X lies outside
 //     [2^-400, 2^400], every coordinate and d are multiplied by the power of two 2^s that
 //     brings X into [1, 2): exact, except that a result in the subnormal range may be off by
-//     less than 2^-1074 (and d 2^s may overflow to infinity: then nothing certifies, rightly,
-//     since every gap is then below 2^5, far below d 2^s). The gap and d scale alike, so the question is
+//     less than 2^-1073 (the scaling is two products when s = -1023) (and d 2^s may overflow,
+//     to infinity or, rounding downward or toward zero, to the largest double: either way
+//     nothing certifies, rightly, since every gap is then below 2^5). The gap and d scale alike, so the question is
 //     unchanged. Either way X <= 2^400 now. Then the first row o is subtracted from every row
 //     (|x - o| <= 2^401, no overflow): y = x - o with a relative error below e. A common
 //     translation changes no gap. Y is the largest |y| (bounds relative to the primitives'
@@ -25,23 +26,26 @@
 //     |n|_1 <= 3 and 1 <= n.n <= 3.
 //  3. Projections p = (n_x y_x + n_y y_y) + n_z y_z. Against n.(exact translated, scaled row):
 //     the rounding of the projection, gamma_3 sum |n_k y_k| + 3 2^-1074 (1 + e)^2
-//     <= 3.01 e 3 Y + 2^-1072, plus sum |n_k| |error of y_k| <= 3 (1.01 e Y + 2^-1073) (the
-//     translation's rounding, and 2^-1074 for each of the two scaled coordinates it
-//     subtracts): in all below 12.1 e Y + 2^-1070 < 2^-48 Y (1 - e) + 2^-1061 <= E =
+//     <= 3.01 e 3 Y + 2^-1072, plus sum |n_k| |error of y_k| <= 3 (1.01 e Y + 2^-1072) (the
+//     translation's rounding, and less than 2^-1073 for each of the two scaled coordinates it
+//     subtracts): in all below 12.1 e Y + 2^-1069 < 2^-48 Y (1 - e) + 2^-1061 <= E =
 //     fl(Y 2^-48) + 2^-1060 (fl(Y 2^-48) >= Y 2^-48 - 2^-1074, and the sum of two positive
 //     doubles is at least their exact sum times 1 - e).
 //  4. Gap. With a_hi the largest computed projection of one side and b_lo the least of the
 //     other, the exact gap is at least (b_lo - a_hi) - 2E, and g = fl(b_lo - a_hi) is at most
 //     (b_lo - a_hi)(1 + e) when positive. With r = fl(sqrt(fl(n.n))), |n| <= r (1 + 2^-50)
 //     (n.n >= 1, so underflowed squares are negligible: the sum's relative error is below
-//     3.02 e, the square root's below e), and the exact d 2^s is below d' + 2^-1074 (d' its
+//     3.02 e, the square root's below e), and the exact d 2^s is below d' + 2^-1073 (d' its
 //     computed value), so d |n| <= fl(d' r) (1 + 2^-49) + 2^-1070. Hence gap > d |n| when
 //     g > (1 + e) (2E + fl(d' r) (1 + 2^-49) + 2^-1070), which the computed
 //     T = fl(fl(fl(2E + fl(d' r)) + 2^-1060) (1 + 2^-47)) is at least (three roundings cost
-//     at most 3e, and 2^-47 - 3e > 2^-52 + 2^-49 + 2^-100). The test is g > T; an infinite
-//     T (overflow of d') never certifies, and nothing else is near overflow (every |y| and
+//     at most 3e, and 2^-47 - 3e > 2^-52 + 2^-49 + 2^-100). The test is g > T; a T made infinite or
+//     huge by d' (overflowed) never certifies, and nothing else is near overflow (every |y| and
 //     every difference of rows below 2^402, a natural direction's components below 2^806
-//     before it is normalised, every |p| < 2^404, E < 2^355).
+//     before it is normalised (point-edge: r x e is normalised before the second cross
+//     product), every |p| < 2^404, E < 2^355). A natural direction that is not finite, or zero,
+//     is skipped. T may be subnormal: additions are then exact and fl(x (1 + 2^-47)) >= x in
+//     every rounding mode, so T still bounds what it must.
 // Directions tried: for each of the kind's feature pairs in order (the primitives' own pair
 // first) its natural direction at t0 and at t1 (point-point: y - x; point-edge: e x (r x e),
 // the perpendicular from the line to the point; point-triangle: the normal; edge-edge:
@@ -130,8 +134,8 @@ struct ProjectionFrame {
   /// points move linearly over [a, b] as well, so a direction certified on these rows
   /// separates over [a, b]. Each row y0 + a (y1 - y0) is computed with an error below
   /// 7.01 e Y + 2^-1074 per coordinate (the difference, the product, the sum; every |y| <= Y),
-  /// on top of y's own 1.01 e Y + 2^-1073; the rows stay below Y (1 + 9 e) in magnitude, so a
-  /// projection errs by at most 9.03 e Y (1 + 9 e) + 3 (8.02 e Y + 2^-1072) < 2^-46 Y + 2^-1069:
+  /// on top of y's own 1.01 e Y + 2^-1072; the rows stay below Y (1 + 9 e) in magnitude, so a
+  /// projection errs by at most 9.03 e Y (1 + 9 e) + 3 (8.02 e Y + 2^-1071) < 2^-46 Y + 2^-1068:
   /// the error bound becomes fl(Y 2^-46) + 2^-1060 (as in step 3 of the header).
   ProjectionFrame over(double a, double b) const {
     ProjectionFrame r = *this;
@@ -187,8 +191,9 @@ bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Ki
   };
   // A direction normalised by its largest component magnitude (header, step 2).
   const auto along = [&](const Vec3& n) {
-    const double m = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
-    if (!(m > 0 && m <= std::numeric_limits<double>::max())) return false;  // zero or not finite
+    if (!(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) return false;
+    const double m = std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
+    if (!(m > 0)) return false;  // zero
     return certifies(Vec3{n.x / m, n.y / m, n.z / m});
   };
   for (int at = 0; at < (both_ends ? 2 * P : P); at += P) {
@@ -202,8 +207,11 @@ bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Ki
       switch (f.pair) {
         case kinds::FeaturePair::point_point: n = p(1) - p(0); break;
         case kinds::FeaturePair::point_edge: {
-          const Vec3 e = p(2) - p(1), r = p(0) - p(1);
-          n = cross(e, cross(r, e));
+          // r x e normalised before the second product keeps n of the size of e (not e^2 r).
+          const Vec3 e = p(2) - p(1), r = p(0) - p(1), c = cross(r, e);
+          const double m = std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z)));
+          if (!(m > 0 && std::isfinite(m))) continue;
+          n = cross(e, Vec3{c.x / m, c.y / m, c.z / m});
           break;
         }
         case kinds::FeaturePair::point_triangle: n = cross(p(2) - p(1), p(3) - p(1)); break;
