@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "exactccd/types.hpp"
+#include "filter/power_of_two.hpp"
 
 namespace exactccd::filter {
 
@@ -24,12 +25,13 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
   for (const Vec3& p : r)
     for (const double x : {p.x, p.y, p.z}) largest = std::fabs(x) > largest ? std::fabs(x) : largest;
   if (largest == 0) return q;
-  const int s = -std::ilogb(largest);
+  const UnitScale unit = unit_scale(largest);
+  const int s = unit.s;
   if (s == 0) return q;
-  if (s > 0 && s <= 1023) {
+  if (s > 0 && s <= 1000) {
     // Scaling up by a normal power of two: every product is exact (no underflow, and no
     // overflow since the largest result is below 2). One multiplication per coordinate.
-    const double factor = std::ldexp(1.0, s);
+    const double factor = unit.first;  // 2^s (unit.second is 1)
     for (Vec3& p : r) p = {p.x * factor, p.y * factor, p.z * factor};
     scaled = true;
     return from_rows<Query>(r);

@@ -47,6 +47,7 @@
 #include "contact/vec3_ops.hpp"
 #include "exactccd/types.hpp"
 #include "filter/double_word.hpp"
+#include "filter/power_of_two.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "separation/separation_terms.hpp"
 
@@ -68,14 +69,13 @@ int certified_distance_sign(const kinds::Feature& f, const std::array<Vec3, N>& 
   double largest = 0;
   for (const Vec3& p : x) largest = std::fmax(largest, std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))));
   if (!(largest > 0 && largest < 0x1p1023) || !(d >= 0 && d < 0x1p1023)) return 0;  // all zero, or not finite
-  const int s = -std::ilogb(largest);  // s in (-1023, 1074]
-  // 2^s as one or two double factors (2^1074 is not a double), each applied exactly: scaling
-  // up, the first product is below 2 (so normal or exact), the second likewise.
-  const double first = std::ldexp(1.0, s > 1000 ? 1000 : s);
-  const double second = std::ldexp(1.0, s > 1000 ? s - 1000 : 0);
+  // 2^s as two normal double factors (filter::unit_scale), each applied exactly when scaling
+  // up: the first product is below 2 (so normal or exact), the second likewise.
+  const filter::UnitScale unit = filter::unit_scale(largest);
+  const int s = unit.s;  // in (-1023, 1074]
   bool exact = true;
   const auto scale = [&](double v) {
-    const double r = (v * first) * second;
+    const double r = unit.apply(v);
     // Scaling down (s < 0): a subnormal result may have lost bits; check by scaling back.
     if (s < 0 && std::fabs(r) < 0x1p-1022 && std::ldexp(r, -s) != v) exact = false;
     return r;
@@ -83,7 +83,7 @@ int certified_distance_sign(const kinds::Feature& f, const std::array<Vec3, N>& 
   std::array<Vec3, N> y;
   for (std::size_t i = 0; i < N; ++i) y[i] = {scale(x[i].x), scale(x[i].y), scale(x[i].z)};
   if (!exact) return 0;
-  const double sd = (d * first) * second;  // d 2^s, exact when >= 2^-500 (above)
+  const double sd = unit.apply(d);  // d 2^s, exact when >= 2^-500 (above)
   if (sd > 0x1p400) return 0;
   const Approx dd = sd >= 0x1p-500 ? Approx{{sd, 0.0}, 0.0} * Approx{{sd, 0.0}, 0.0} : Approx{{0.0, 0.0}, 0x1p-1000};
   const auto rel = [&](int i, int j) {

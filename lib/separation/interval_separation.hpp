@@ -92,36 +92,26 @@ inline contact::Poly<I, 5> derivative(const Poly6<I>& p) {
   return r;
 }
 
-/// A term's polynomial with its derivative (formed once per query, used on every cell).
-struct Sloped {
-  Poly6<I> p;
-  contact::Poly<I, 5> slope;
-};
-
-/// A term (separation_terms.hpp) with the derivatives of its polynomials.
+/// A term (separation_terms.hpp) with the derivatives of its polynomials (formed once per
+/// query, used on every cell): slope[0] of the distance, slope[1 + k] of positive[k].
 struct SlopedTerm {
-  Sloped distance;
-  std::array<Sloped, 4> positive;
-  int positives = 0;
+  Term<I> term;
+  std::array<contact::Poly<I, 5>, 5> slope;
+
+  explicit SlopedTerm(Term<I>&& t) : term(std::move(t)) {
+    slope[0] = derivative(term.distance);
+    for (int k = 0; k < term.positives; ++k) slope[1 + k] = derivative(term.positive[k]);
+  }
 };
 
-inline SlopedTerm with_slopes(const Term<I>& term) {
-  SlopedTerm r;
-  r.distance = {term.distance, derivative(term.distance)};
-  for (int k = 0; k < term.positives; ++k) r.positive[k] = {term.positive[k], derivative(term.positive[k])};
-  r.positives = term.positives;
-  return r;
-}
-
-/// An enclosure of p over the cell [a, b] (t = [a, b], m its midpoint): where p' has a certain
-/// sign on the cell, p is monotone there and its range is the hull of p(a) and p(b); otherwise
-/// the mean-value form p(m) + p'(t) (t - m) intersected with Horner's scheme over t (both
-/// enclose the range; the first shrinks with the cell's width squared near a root, where
+/// An enclosure of p over the cell [a, b] (t = [a, b], m its midpoint; dp = p'): where p' has
+/// a certain sign on the cell, p is monotone there and its range is the hull of p(a) and p(b);
+/// otherwise the mean-value form p(m) + p'(t) (t - m) intersected with Horner's scheme over t
+/// (both enclose the range; the first shrinks with the cell's width squared near a root, where
 /// Horner's scheme over power-basis coefficients suffers from cancellation).
-inline I range(const Sloped& sloped, double a, double b) {
-  const Poly6<I>& p = sloped.p;
+inline I range(const Poly6<I>& p, const contact::Poly<I, 5>& dp, double a, double b) {
   const I t(a, b);
-  const I slope = evaluate(sloped.slope, t);
+  const I slope = evaluate(dp, t);
   if (certain_sign(slope) != 0) {
     const I pa = evaluate(p, I(a)), pb = evaluate(p, I(b));
     return I(std::min(pa.inf(), pb.inf()), std::max(pa.sup(), pb.sup()));
@@ -133,18 +123,19 @@ inline I range(const Sloped& sloped, double a, double b) {
 }
 
 /// The term holds nowhere in the cell [a, b] (certainly).
-inline bool excluded(const SlopedTerm& term, double a, double b) {
-  if (range(term.distance, a, b).inf() > 0) return true;
+inline bool excluded(const SlopedTerm& sloped, double a, double b) {
+  const Term<I>& term = sloped.term;
+  if (range(term.distance, sloped.slope[0], a, b).inf() > 0) return true;
   for (int k = 0; k < term.positives; ++k)
-    if (range(term.positive[k], a, b).sup() <= 0) return true;
+    if (range(term.positive[k], sloped.slope[1 + k], a, b).sup() <= 0) return true;
   return false;
 }
 
 /// The term holds at t (certainly): f <= 0 and every g > 0.
-inline bool holds(const SlopedTerm& term, const I& t) {
-  if (evaluate(term.distance.p, t).sup() > 0) return false;
+inline bool holds(const Term<I>& term, const I& t) {
+  if (evaluate(term.distance, t).sup() > 0) return false;
   for (int k = 0; k < term.positives; ++k)
-    if (evaluate(term.positive[k].p, t).inf() <= 0) return false;
+    if (evaluate(term.positive[k], t).inf() <= 0) return false;
   return true;
 }
 
@@ -269,15 +260,15 @@ template <class Query>
 IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool want_toi = true) {
   using namespace interval_detail;
   using Kind = kinds::kind_of<Query>;
-  const CGAL::Protect_FPU_rounding<true> upward;
+  // Upward rounding (for Interval_nt) is installed when the terms are built: the directions
+  // before that are certified in any rounding mode (separating_direction.hpp).
+  std::optional<CGAL::Protect_FPU_rounding<true>> upward;
   const auto xd = points3<double>(q);
   const ProjectionFrame frame(xd, d);
-  std::array<Side, Kind::points> all_sides;
-  for (int i = 0; i < Kind::points; ++i) all_sides[i] = i < Kind::first_points ? Side::first : Side::second;
   // The terms are built when the walk first meets a cell that no direction separates (0.
   // below); a query whose cells down to kSeparationDepth are all separated needs none.
   std::array<bool, Kind::features.size()> use{};
-  std::vector<int> feature_of_term;
+  std::array<int, Kind::features.size()> feature_of_term{};
   std::vector<SlopedTerm> terms;
   bool built = false;
   bool zero_undecided = false;  // step 1 could not decide t = 0
@@ -286,18 +277,20 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
   // query (or leaves it undecided), nothing when every term certainly fails at 0.
   const auto build = [&](bool at_zero) -> std::optional<IntervalVerdict> {
     built = true;
+    upward.emplace();
     // Feature pairs whose parts a direction keeps farther than d apart never hold: no term.
+    std::size_t used = 0;
     for (std::size_t f = 0; f < Kind::features.size(); ++f)
-      if ((use[f] = !feature_separated<Kind>(frame, Kind::features[f]))) feature_of_term.push_back(static_cast<int>(f));
+      if ((use[f] = !feature_separated<Kind>(frame, Kind::features[f]))) feature_of_term[used++] = static_cast<int>(f);
     for (std::size_t f = 0; f < use.size(); ++f) undecided.use[f] = use[f];
-    if (feature_of_term.empty()) return IntervalVerdict{true, std::nullopt};
-    const auto x = points3<I>(q);
-    for (const Term<I>& term : separation::terms<Kind>(x, I(d) * I(d), use.data())) terms.push_back(with_slopes(term));
+    if (used == 0) return IntervalVerdict{true, std::nullopt};
+    terms.reserve(used);
+    for_each_term<Kind>(points3<I>(q), I(d) * I(d), use.data(), [&](Term<I>&& t) { terms.emplace_back(std::move(t)); });
     if (!at_zero) return std::nullopt;
     // 1. t = 0.
     bool all_fail_at_zero = true;
     for (const SlopedTerm& term : terms) {
-      if (holds(term, I(0))) return IntervalVerdict{true, TimeInterval{0.0, 0.0}};
+      if (holds(term.term, I(0))) return IntervalVerdict{true, TimeInterval{0.0, 0.0}};
       all_fail_at_zero = all_fail_at_zero && excluded(term, 0.0, 0.0);
     }
     if (!all_fail_at_zero) {
@@ -327,9 +320,8 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
       // 0. A direction keeping the primitives apart over the cell excludes every term at once:
       // before the terms exist every direction is tried, down to kSeparationDepth; then only
       // the primitives' own pair's (cheap, and the one that separates most cells).
-      const ProjectionFrame cell_frame = frame.over(cell.a, cell.b);
-      if (cell.depth > 0 && (built ? points_separated<Kind>(cell_frame, all_sides, Kind::features, 1)
-                                   : primitives_separated<Kind>(cell_frame, false)))
+      if (cell.depth > 0 && (built ? primitives_separated<Kind>(frame.over(cell.a, cell.b), true, 1)
+                                   : primitives_separated<Kind>(frame.over(cell.a, cell.b), false)))
         continue;
       if (!built) {
         if (cell.depth < kSeparationDepth) {
@@ -347,7 +339,7 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
       if (!want_toi) {  // a term certainly holding at the cell's midpoint: a collision there or earlier
         const double m = cell.a + (cell.b - cell.a) / 2;
         for (std::size_t i = 0; i < terms.size(); ++i)
-          if ((cell.open >> i & 1) && holds(terms[i], I(m))) return {true, TimeInterval{0.0, m}};
+          if ((cell.open >> i & 1) && holds(terms[i].term, I(m))) return {true, TimeInterval{0.0, m}};
       }
       int alive = -1, alive_count = 0;
       std::uint32_t open = 0;
@@ -360,13 +352,14 @@ IntervalVerdict interval_separation(const Query& q, double d, double tmax, bool 
       if (alive_count == 0) continue;  // free of contact
       if (alive_count == 1) {
         // 3. One term left: a simple sign change of f with every g positive?
-        const SlopedTerm& term = terms[alive];
+        const Term<I>& term = terms[alive].term;
+        const auto& slope = terms[alive].slope;
         bool g_positive = true;
         for (int k = 0; k < term.positives && g_positive; ++k)
-          g_positive = range(term.positive[k], cell.a, cell.b).inf() > 0;
-        if (g_positive && certain_sign(evaluate(term.distance.p, I(cell.a))) > 0 &&
-            certain_sign(evaluate(term.distance.p, I(cell.b))) < 0 &&
-            certain_sign(evaluate(term.distance.slope, I(cell.a, cell.b))) != 0) {
+          g_positive = range(term.positive[k], slope[1 + k], cell.a, cell.b).inf() > 0;
+        if (g_positive && certain_sign(evaluate(term.distance, I(cell.a))) > 0 &&
+            certain_sign(evaluate(term.distance, I(cell.b))) < 0 &&
+            certain_sign(evaluate(slope[0], I(cell.a, cell.b))) != 0) {
           if (!want_toi) return {true, TimeInterval{cell.a, cell.b}};
           const kinds::Feature& feature = Kind::features[feature_of_term[alive]];
           // Signs at doubles in double-double arithmetic, which needs round-to-nearest (restored

@@ -46,8 +46,8 @@
 //     product), every |p| < 2^404, E < 2^355). A natural direction that is not finite, or zero,
 //     is skipped. T may be subnormal: additions are then exact and fl(x (1 + 2^-47)) >= x in
 //     every rounding mode, so T still bounds what it must.
-// Directions tried: for each of the kind's feature pairs in order (the primitives' own pair
-// first) its natural direction at t0 and at t1 (point-point: y - x; point-edge: e x (r x e),
+// Directions tried: each of the kind's feature pairs' natural direction at t0, in order (the
+// primitives' own pair first), then each at t1 (point-point: y - x; point-edge: e x (r x e),
 // the perpendicular from the line to the point; point-triangle: the normal; edge-edge:
 // da x db), then the coordinate axes (on the simulation sets, candidates of a broad phase,
 // the first pair's direction at t0 decides most queries and the axes none).
@@ -57,12 +57,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 
 #include "contact/vec3_ops.hpp"
 #include "exactccd/types.hpp"
+#include "filter/power_of_two.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "separation/separation_terms.hpp"
 
@@ -70,22 +69,6 @@ namespace exactccd::separation {
 
 /// Which set a point belongs to in points_separated: neither, the first or the second.
 enum class Side { none, first, second };
-
-/// floor(log2 v) for a finite v > 0 (std::ilogb without the library call for normal v).
-inline int binary_exponent(double v) {
-  std::uint64_t bits = 0;
-  std::memcpy(&bits, &v, sizeof bits);
-  const int biased = static_cast<int>(bits >> 52 & 0x7ff);
-  return biased != 0 ? biased - 1023 : std::ilogb(v);  // subnormal: rare, the library
-}
-
-/// 2^k as a double, for k in [-1022, 1023] (normal: exact from its bits).
-inline double power_of_two(int k) {
-  const std::uint64_t bits = static_cast<std::uint64_t>(k + 1023) << 52;
-  double v = 0;
-  std::memcpy(&v, &bits, sizeof v);
-  return v;
-}
 
 /// A query's rows and d in the frame of the header's step 1 (scaled by a power of two,
 /// translated to the first row), with the projection error bound E of step 3. `usable` is
@@ -98,27 +81,18 @@ struct ProjectionFrame {
   double extent = 0;  ///< Y: the largest |y| at t0 and t1
   bool usable = false;
 
-  ProjectionFrame() = default;
-
   /// The frame of rows `x` (finite doubles) and the minimum distance d >= 0 (finite).
   ProjectionFrame(const std::array<Vec3, N>& x, double min_distance) {
     double largest = 0;
     for (const Vec3& p : x) largest = std::max(largest, std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
     if (!(largest > 0)) return;
-    // Scaled only outside [2^-400, 2^400] (step 1 of the header), by 2^s: largest 2^s in [1, 2),
-    // s in [-1023, 1074], as two normal double factors (2^1074 is not a double).
-    double first = 1, second = 1;
-    if (!(largest >= 0x1p-400 && largest <= 0x1p400)) {
-      const int s = -binary_exponent(largest);
-      const int k = std::clamp(s, -1022, 1000);
-      first = power_of_two(k);
-      second = power_of_two(s - k);
-    }
-    const auto scale = [&](double v) { return (v * first) * second; };
-    if (first == 1 && second == 1) {
+    // Scaled only outside [2^-400, 2^400] (step 1 of the header), by 2^s: largest 2^s in [1, 2).
+    if (largest >= 0x1p-400 && largest <= 0x1p400) {
       for (std::size_t i = 0; i < N; ++i) y[i] = {x[i].x - x[0].x, x[i].y - x[0].y, x[i].z - x[0].z};
       d = min_distance;
     } else {
+      const filter::UnitScale unit = filter::unit_scale(largest);
+      const auto scale = [&](double v) { return unit.apply(v); };
       const Vec3 o{scale(x[0].x), scale(x[0].y), scale(x[0].z)};
       for (std::size_t i = 0; i < N; ++i) y[i] = {scale(x[i].x) - o.x, scale(x[i].y) - o.y, scale(x[i].z) - o.z};
       d = scale(min_distance);
@@ -227,11 +201,14 @@ bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Ki
 
 /// True when a direction certifies that the kind's two primitives, with the rows of `frame`,
 /// stay farther than the frame's d apart (over [0, 1], or over [a, b] for frame.over(a, b)).
+/// `feature_count`: the directions of the kind's first pairs only; `both_ends`: false for the
+/// pairs' directions at the start alone (the axes are tried either way).
 template <class Kind, std::size_t N>
-bool primitives_separated(const ProjectionFrame<N>& frame, bool both_ends = true) {
+bool primitives_separated(const ProjectionFrame<N>& frame, bool both_ends = true,
+                          std::size_t feature_count = Kind::features.size()) {
   std::array<Side, Kind::points> side;
   for (int i = 0; i < Kind::points; ++i) side[i] = i < Kind::first_points ? Side::first : Side::second;
-  return points_separated<Kind>(frame, side, Kind::features, Kind::features.size(), both_ends);
+  return points_separated<Kind>(frame, side, Kind::features, feature_count, both_ends);
 }
 
 /// True when a direction certifies dist(A(t), B(t)) > d for every t in [0, 1] (then no t in

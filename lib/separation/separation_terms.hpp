@@ -100,11 +100,11 @@ void feature_condition(const kinds::Feature& f, Rel&& rel, const DD& dd, Out&& o
   }
 }
 
-/// The terms of a kind's feature pairs for a query with points `x` (points3) and d^2 = `d2`;
-/// only those of the features f with use[f] when `use` is given (then in feature order).
-template <class Kind, class NT, std::size_t N>
-std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2,
-                            const bool* use = nullptr) {
+/// Calls out(term) with the term of each of a kind's feature pairs for a query with points `x`
+/// (points3) and d^2 = `d2`, in feature order; only for the features f with use[f] when `use`
+/// is given.
+template <class Kind, class NT, std::size_t N, class Out>
+void for_each_term(const std::array<Vec3T<NT>, N>& x, const NT& d2, const bool* use, Out&& out) {
   static_assert(N == 2 * Kind::points);
   // The motion of the vector from point i to point j.
   const auto rel = [&](int i, int j) {
@@ -114,8 +114,6 @@ std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2,
                                        contact::linear_motion(NT(v0.z - u0.z), NT(v1.z - u1.z))};
   };
   const contact::Poly<NT, 0> dd{{d2}};
-  std::vector<Term<NT>> out;
-  out.reserve(Kind::features.size());
   for (std::size_t index = 0; index < Kind::features.size(); ++index) {
     if (use && !use[index]) continue;
     feature_condition(Kind::features[index], rel, dd, [&](const auto& distance, const auto&... positive) {
@@ -124,9 +122,17 @@ std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2,
       int k = 0;
       ((t.positive[k++] = widen(positive)), ...);
       t.positives = k;
-      out.push_back(std::move(t));
+      out(std::move(t));
     });
   }
+}
+
+/// The terms of for_each_term as a vector.
+template <class Kind, class NT, std::size_t N>
+std::vector<Term<NT>> terms(const std::array<Vec3T<NT>, N>& x, const NT& d2, const bool* use = nullptr) {
+  std::vector<Term<NT>> out;
+  out.reserve(Kind::features.size());
+  for_each_term<Kind>(x, d2, use, [&](Term<NT>&& t) { out.push_back(std::move(t)); });
   return out;
 }
 
