@@ -39,7 +39,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/static_stage.hpp"
@@ -1119,7 +1119,7 @@ int run_each_stage_checking_environment(const TestQuery& q) {
   int calls = 0;
   const auto check = [&](const char* stage) {
     ++calls;
-    EXPECT_TRUE(filter::is_default_fp_environment()) << stage << " changed the environment: " << describe(q);
+    EXPECT_TRUE(numeric::is_default_fp_environment()) << stage << " changed the environment: " << describe(q);
   };
   const auto stages = [&](const auto& query) {
     (void)filter::volume_excluded(from_rows<VertexFaceQuery>(q.rows));
@@ -1128,14 +1128,14 @@ int run_each_stage_checking_environment(const TestQuery& q) {
     (void)filter::contact_at_end(query, 0);
     (void)filter::volume_sign_at_end(query, 1);
     check("static predicates");
-    filter::StageResult interval;
+    pipeline::Findings findings;
     if (q.kind == Kind::vertex_face)
-      interval = filter::interval_stage(from_rows<VertexFaceQuery>(q.rows), true);
+      (void)filter::interval_stage(from_rows<VertexFaceQuery>(q.rows), true, findings);
     else
-      interval = filter::interval_stage(from_rows<EdgeEdgeQuery>(q.rows), true);
+      (void)filter::interval_stage(from_rows<EdgeEdgeQuery>(q.rows), true, findings);
     check("interval stage");
-    if (interval.toi_cell) {
-      (void)filter::toi_in_cell(query, *interval.toi_cell);
+    if (findings.toi_cell) {
+      (void)filter::toi_in_cell(query, *findings.toi_cell);
       check("toi_in_cell (double-double and GMP signs)");
     }
     if (q.kind == Kind::vertex_face)
@@ -1162,7 +1162,7 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
   // path. The queries are chosen so that, together, they reach every stage of the filtered
   // method through the public API (asserted with the counters below, every counter), and each
   // stage is also run directly on each of them, with the state checked after each stage.
-  ASSERT_TRUE(filter::is_default_fp_environment());
+  ASSERT_TRUE(numeric::is_default_fp_environment());
   StageCounters counters;
   std::vector<TestQuery> queries = shared_or_no_queries();
   for (Kind kind : {Kind::vertex_face, Kind::edge_edge}) queries.push_back(simple_query(kind));
@@ -1221,14 +1221,14 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
   int stage_calls = 0;
   for (const TestQuery& q : queries) {
     call_ccd(q, Method::filtered, &counters);
-    ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
+    ASSERT_TRUE(numeric::is_default_fp_environment()) << describe(q);
     call_toi(q, Method::filtered, &counters);
-    ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
+    ASSERT_TRUE(numeric::is_default_fp_environment()) << describe(q);
     for (tools::Method m : {tools::Method::exact, tools::Method::naive}) {
       call_ccd(q, m, nullptr);
-      ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
+      ASSERT_TRUE(numeric::is_default_fp_environment()) << describe(q);
       call_toi(q, m, nullptr);
-      ASSERT_TRUE(filter::is_default_fp_environment()) << describe(q);
+      ASSERT_TRUE(numeric::is_default_fp_environment()) << describe(q);
     }
     stage_calls += run_each_stage_checking_environment(q);
   }

@@ -26,11 +26,13 @@ namespace {
 
 using families::AnyQuery;
 
-std::string describe(const filter::StageResult& r) {
+using pipeline::Outcome;
+
+std::string describe(const Outcome& r) {
   std::ostringstream out;
-  out << (r.verdict == filter::Verdict::collision      ? "collision"
-          : r.verdict == filter::Verdict::no_collision ? "no collision"
-                                                        : "uncertain");
+  out << (r.answer == Outcome::Answer::collides    ? "collision"
+          : r.answer == Outcome::Answer::separate ? "no collision"
+                                                  : "uncertain");
   if (r.toi) out << std::hexfloat << " [" << r.toi->lo << ", " << r.toi->hi << "]";
   return out.str();
 }
@@ -44,17 +46,17 @@ struct Tally {
 template <class Query>
 void compare_with_gmp(const Query& q, const std::string& label, Tally& tally) {
   for (const bool want_toi : {false, true}) {
-    const filter::StageResult fixed = filter::fixed_integer_stage(q, want_toi);
-    const filter::StageResult gmp = filter::integer_stage(q, want_toi);
+    const Outcome fixed = filter::fixed_integer_stage(q, want_toi);
+    const Outcome gmp = filter::integer_stage(q, want_toi);
     ++tally.queries;
     if (filter::exponent_spread(q) > filter::kFixedIntegerSpreadLimit) {
       ++tally.deferred_by_spread;
-      EXPECT_EQ(fixed.verdict, filter::Verdict::uncertain) << label << ": beyond the spread limit it must defer";
+      EXPECT_EQ(fixed.answer, Outcome::Answer::undecided) << label << ": beyond the spread limit it must defer";
       continue;
     }
-    if (fixed.verdict == filter::Verdict::uncertain) continue;
+    if (fixed.answer == Outcome::Answer::undecided) continue;
     ++tally.decided;
-    ASSERT_NE(gmp.verdict, filter::Verdict::uncertain) << label << ": fixed decided, GMP did not";
+    ASSERT_NE(gmp.answer, Outcome::Answer::undecided) << label << ": fixed decided, GMP did not";
     EXPECT_EQ(describe(fixed), describe(gmp)) << label << (want_toi ? " (toi)" : " (ccd)");
   }
 }
@@ -82,11 +84,11 @@ TEST(FixedIntegerStage, AgreesWithTheExactMethodOnASample) {
     const families::Instance instance = families::random_instance(rng);
     std::visit(
         [&](const auto& q) {
-          const filter::StageResult fixed = filter::fixed_integer_stage(q, true);
-          if (fixed.verdict == filter::Verdict::uncertain) return;
+          const Outcome fixed = filter::fixed_integer_stage(q, true);
+          if (fixed.answer == Outcome::Answer::undecided) return;
           ++decided;
           const std::optional<TimeInterval> reference = toi(q, Method::exact);
-          ASSERT_EQ(fixed.verdict == filter::Verdict::collision, reference.has_value()) << "instance " << i;
+          ASSERT_EQ(fixed.answer == Outcome::Answer::collides, reference.has_value()) << "instance " << i;
           if (reference) {
             ASSERT_TRUE(fixed.toi.has_value()) << "instance " << i;
             EXPECT_EQ(fixed.toi->lo, reference->lo) << "instance " << i;
@@ -189,15 +191,15 @@ TEST(FixedIntegerStage, OneMoreBitOfSpreadDefers) {
   };
   const VertexFaceQuery q = crossing(filter::kFixedIntegerSpreadLimit + 1);
   ASSERT_EQ(filter::exponent_spread(q), filter::kFixedIntegerSpreadLimit + 1);
-  EXPECT_EQ(filter::fixed_integer_stage(q, true).verdict, filter::Verdict::uncertain);
-  const filter::StageResult gmp = filter::integer_stage(q, true);
-  ASSERT_EQ(gmp.verdict, filter::Verdict::collision);
+  EXPECT_EQ(filter::fixed_integer_stage(q, true).answer, Outcome::Answer::undecided);
+  const Outcome gmp = filter::integer_stage(q, true);
+  ASSERT_EQ(gmp.answer, Outcome::Answer::collides);
   EXPECT_EQ(gmp.toi->lo, 0.5);
   // The same crossing at the limit: decided by the fixed stage, as by GMP.
   const VertexFaceQuery r = crossing(filter::kFixedIntegerSpreadLimit);
   ASSERT_EQ(filter::exponent_spread(r), filter::kFixedIntegerSpreadLimit);
-  const filter::StageResult fixed = filter::fixed_integer_stage(r, true);
-  ASSERT_EQ(fixed.verdict, filter::Verdict::collision);
+  const Outcome fixed = filter::fixed_integer_stage(r, true);
+  ASSERT_EQ(fixed.answer, Outcome::Answer::collides);
   EXPECT_EQ(fixed.toi->lo, 0.5);
   EXPECT_EQ(fixed.toi->hi, 0.5);
 }

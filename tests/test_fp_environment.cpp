@@ -27,7 +27,7 @@
 #include "exactccd/exactccd.h"
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "io/benchmark_csv.hpp"
 #include "io/obj.hpp"
 #include "tools/methods.hpp"
@@ -669,11 +669,11 @@ TEST(DefaultFpEnvironment, InstallsTheDefaultAndRestoresOnException) {
   const RestoreDefault restore;
   install(Environment{"downward_ftz", FE_DOWNWARD, true, false});
   const ControlState installed = control_state();
-  EXPECT_FALSE(filter::is_default_fp_environment());
+  EXPECT_FALSE(numeric::is_default_fp_environment());
   try {
-    const filter::DefaultFpEnvironment guard;
+    const numeric::DefaultFpEnvironment guard;
     EXPECT_TRUE(guard.changed());
-    EXPECT_TRUE(filter::is_default_fp_environment());
+    EXPECT_TRUE(numeric::is_default_fp_environment());
     EXPECT_EQ(std::fegetround(), FE_TONEAREST);
     volatile double tiny = 0x1p-1070;
     EXPECT_EQ(tiny * 0.5, 0x1p-1071) << "gradual underflow inside the guard";
@@ -682,7 +682,7 @@ TEST(DefaultFpEnvironment, InstallsTheDefaultAndRestoresOnException) {
   }
   EXPECT_TRUE(control_state() == installed) << describe(control_state());
   std::fesetenv(FE_DFL_ENV);
-  const filter::DefaultFpEnvironment nested;
+  const numeric::DefaultFpEnvironment nested;
   EXPECT_FALSE(nested.changed()) << "a guard in the default environment changes nothing";
 }
 

@@ -14,7 +14,7 @@
 
 #include "contact/contact_polynomials.hpp"
 #include "exactccd/rational.hpp"
-#include "filter/interval_values.hpp"
+#include "filter/interval/values.hpp"
 
 namespace exactccd {
 namespace {

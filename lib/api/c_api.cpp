@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "exactccd/ccd.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "kinds/primitive_kinds.hpp"
 
 namespace {
@@ -34,7 +34,7 @@ std::optional<Query> read_any_query(const double* q) {
 template <class Query, class Toi>
 exactccd_status toi_impl(const double* query, int* collides, double* lo, double* hi, Toi&& toi) {
   if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const filter::DefaultFpEnvironment fp_environment;  // as every C++ entry point
+  const numeric::DefaultFpEnvironment fp_environment;  // as every C++ entry point
   const std::optional<Query> q = read_any_query<Query>(query);
   if (!q) return EXACTCCD_ERROR_NON_FINITE;
   try {
@@ -67,7 +67,7 @@ bool visit_c_kind(int kind, F&& f) {
 exactccd_status separation_impl(int kind, const double* query, double d, double tmax, bool want_toi,
                                 int* collides, double* lo, double* hi) {
   if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const filter::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
+  const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
   if (!(std::isfinite(d) && d >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
   exactccd_status status = EXACTCCD_ERROR_PARAMETER;
   visit_c_kind(kind, [&](auto k) {

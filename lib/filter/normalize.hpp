@@ -9,7 +9,9 @@
 #include <cmath>
 
 #include "exactccd/types.hpp"
-#include "filter/power_of_two.hpp"
+#include "filter/volume_exclusion.hpp"
+#include "numeric/power_of_two.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::filter {
 
@@ -25,7 +27,7 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
   for (const Vec3& p : r)
     for (const double x : {p.x, p.y, p.z}) largest = std::fabs(x) > largest ? std::fabs(x) : largest;
   if (largest == 0) return q;
-  const UnitScale unit = unit_scale(largest);
+  const numeric::UnitScale unit = numeric::unit_scale(largest);
   const int s = unit.s;
   if (s == 0) return q;
   if (s > 0 && s <= 1000) {
@@ -45,5 +47,22 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
   scaled = true;
   return from_rows<Query>(r);
 }
+
+/// The contact question's step after stage 1, past the hot path: the query brought to a
+/// magnitude near 1 (exactly) so that huge or tiny coordinates do not overflow or underflow the
+/// later filters (answers are unchanged), and stage 1 retried on it only where its range
+/// limits stopped it (volume_exclusion.hpp: otherwise the scaled query's rounded values are
+/// the same up to a power of two). Counted as volume exclusion when the retry decides.
+struct UnitScalingStage {
+  static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
+  /// Rescales work.query; decides when the retried stage 1 does.
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    bool scaled = false;
+    work.query = scaled_to_unit(work.query, scaled);
+    if (scaled && work.findings.volume_out_of_range && volume_excluded(work.query)) return pipeline::Outcome::separate();
+    return pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::filter

@@ -33,6 +33,12 @@ struct Feature {
   std::array<int, 4> points;
 };
 
+/// Which of a kind's feature pairs (at most 9) take part in a computation: mask[f] for the f-th.
+using FeatureMask = std::array<bool, 9>;
+
+/// Every feature pair.
+inline constexpr FeatureMask kAllFeatures{true, true, true, true, true, true, true, true, true};
+
 /// Vertex-face: a point p against a triangle (a, b, c).
 struct VertexFace {
   template <class T>

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "scene/narrow_phase.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
@@ -170,7 +170,7 @@ void validate(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& po
 std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positions_t0,
                                                 const std::vector<Vec3>& positions_t1,
                                                 const CandidateSet& candidates, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
   const CandidateSetRange range(candidates);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
@@ -182,7 +182,7 @@ std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positio
 
 std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                                          const CandidateSet& candidates, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
   const CandidateSetRange range(candidates);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
@@ -190,13 +190,13 @@ std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, 
 }
 
 std::optional<TimeInterval> earliest_toi(const std::vector<CandidateCollision>& collisions) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   return scene::earliest_of(collisions);
 }
 
 bool is_collision_free(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                        const CandidateSet& candidates, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
   const CandidateSetRange range(candidates);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);

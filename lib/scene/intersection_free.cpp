@@ -17,7 +17,7 @@
 #include <variant>
 
 #include "exactccd/scene.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "scene/broad_phase.hpp"
 #include "scene/scene_primitives.hpp"
 
@@ -81,7 +81,7 @@ int shared_vertices(const std::array<int, 3>& s, const std::array<int, 3>& t, in
 }  // namespace
 
 bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles) {
-  const filter::DefaultFpEnvironment fp_environment;  // CGAL's static filters need it too
+  const numeric::DefaultFpEnvironment fp_environment;  // CGAL's static filters need it too
   scene::require_finite_positions(positions, "positions");
   scene::require_valid_triangles(triangles, positions.size());
   std::vector<Point> points(positions.size());

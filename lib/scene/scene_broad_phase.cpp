@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "exactccd/scene.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "scene/candidate_finder.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
@@ -34,7 +34,7 @@ struct SceneBroadPhase::State {
 };
 
 SceneBroadPhase::SceneBroadPhase(const Scene& scene, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   validate(options);
   state_ = std::make_unique<State>(scene, options);  // validates the scene
   state_->refresh();
@@ -45,7 +45,7 @@ SceneBroadPhase::SceneBroadPhase(SceneBroadPhase&&) noexcept = default;
 SceneBroadPhase& SceneBroadPhase::operator=(SceneBroadPhase&&) noexcept = default;
 
 void SceneBroadPhase::update(const std::vector<Vec3>& positions_t1) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   if (positions_t1.size() != state_->scene.positions_t0.size())
     throw std::invalid_argument("exactccd SceneBroadPhase::update: positions_t1 has " +
                                 std::to_string(positions_t1.size()) + " vertices but positions_t0 has " +

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "exactccd/scene.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "scene/narrow_phase.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
@@ -108,7 +108,7 @@ CcdParams params_of(const SceneOptions& options) {
 
 template <class SceneT>
 std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
   const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
@@ -122,7 +122,7 @@ std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOption
 
 template <class SceneT>
 std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
   const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
@@ -132,7 +132,7 @@ std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOpti
 
 template <class SceneT>
 bool is_collision_free_in(const SceneT& scene, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   const CcdParams params = params_of(options);
   const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
@@ -151,7 +151,7 @@ std::vector<Collision> find_collisions(const Scene2d& scene, const SceneOptions&
 }
 
 std::optional<TimeInterval> earliest_toi(const std::vector<Collision>& collisions) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   return scene::earliest_of(collisions);
 }
 
@@ -172,7 +172,7 @@ bool is_collision_free(const Scene2d& scene, const SceneOptions& options) {
 }
 
 double max_collision_free_step(const std::optional<TimeInterval>& earliest, double tmax) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   scene::require_valid_params(CcdParams{0.0, tmax});
   if (!earliest) return tmax;
   // Every collision time t >= lo; the largest double s < lo gives [0, s] without one (and

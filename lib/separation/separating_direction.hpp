@@ -61,8 +61,9 @@
 
 #include "contact/vec3_ops.hpp"
 #include "exactccd/types.hpp"
-#include "filter/power_of_two.hpp"
+#include "numeric/power_of_two.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/outcome.hpp"
 #include "separation/separation_terms.hpp"
 
 namespace exactccd::separation {
@@ -91,7 +92,7 @@ struct ProjectionFrame {
       for (std::size_t i = 0; i < N; ++i) y[i] = {x[i].x - x[0].x, x[i].y - x[0].y, x[i].z - x[0].z};
       d = min_distance;
     } else {
-      const filter::UnitScale unit = filter::unit_scale(largest);
+      const numeric::UnitScale unit = numeric::unit_scale(largest);
       const auto scale = [&](double v) { return unit.apply(v); };
       const Vec3 o{scale(x[0].x), scale(x[0].y), scale(x[0].z)};
       for (std::size_t i = 0; i < N; ++i) y[i] = {scale(x[i].x) - o.x, scale(x[i].y) - o.y, scale(x[i].z) - o.z};
@@ -234,5 +235,17 @@ bool feature_separated(const ProjectionFrame<N>& frame, const kinds::Feature& f)
   for (int k = 0; k < count; ++k) side[f.points[k]] = k < first ? Side::first : Side::second;
   return points_separated<Kind>(frame, side, std::array<kinds::Feature, 1>{f}, 1);
 }
+
+/// The first stage of the minimum-separation question (and, at d = 0, of the point and 2D
+/// kinds): a direction certifies that the swept primitives stay farther than d apart.
+struct SeparatingDirectionStage {
+  static constexpr pipeline::Counter counter = &StageCounters::separating_direction;  ///< counted as
+  /// Separate when a direction certifies it; else undecided.
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    if (separated_beyond(work.query, work.question.params.min_distance)) return pipeline::Outcome::separate();
+    return pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::separation

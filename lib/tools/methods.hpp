@@ -13,7 +13,7 @@
 
 #include "baseline/naive_ccd.hpp"
 #include "exactccd/ccd.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::tools {
@@ -63,7 +63,7 @@ constexpr baseline::NaiveVariant naive_variant(Method m) {
 /// non-finite coordinate. The TOI is the root found, as [t, t] (uncertified).
 template <class Query>
 std::optional<TimeInterval> baseline_answer(const Query& q, Method method, bool want_toi) {
-  const filter::DefaultFpEnvironment fp_environment;
+  const numeric::DefaultFpEnvironment fp_environment;
   for (const Vec3& v : rows(q))
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
       throw std::invalid_argument("exactccd::" + std::string(kinds::kind_of<Query>::function) +

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace exactccd::filter {
+namespace exactccd::numeric {
 
 /// floor(log2 v) for a finite v > 0 (std::ilogb without the library call for normal v).
 inline int binary_exponent(double v) {
@@ -45,4 +45,4 @@ inline UnitScale unit_scale(double largest) {
   return r;
 }
 
-}  // namespace exactccd::filter
+}  // namespace exactccd::numeric

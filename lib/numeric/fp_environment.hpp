@@ -24,7 +24,7 @@
 #include <xmmintrin.h>
 #endif
 
-namespace exactccd::filter {
+namespace exactccd::numeric {
 
 /// True iff the calling thread's floating-point control state is the IEEE default the filters
 /// are proved in: round to nearest, every exception masked, and (where the hardware has them)
@@ -144,4 +144,4 @@ class DefaultFpEnvironment {
 #endif
 };
 
-}  // namespace exactccd::filter
+}  // namespace exactccd::numeric

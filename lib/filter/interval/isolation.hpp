@@ -8,20 +8,23 @@
 // Protect_FPU_rounding of the stage's entry point.
 #pragma once
 
-#include <CGAL/Interval_nt.h>
 #include <boost/container/small_vector.hpp>
 
 #include <array>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 
 #include "contact/contact_rule.hpp"
+#include "numeric/interval.hpp"
 
 namespace exactccd::filter::interval {
 
-using Interval = CGAL::Interval_nt<false>;  // requires the rounding mode set by the caller
+using numeric::certain_sign;
+using numeric::classify;
+using numeric::Interval;  // requires the rounding mode set by the caller
+using numeric::next_up_nonnegative;
+using numeric::sign_class;
+using numeric::SignClass;
 template <int D>
 using Bernstein = std::array<Interval, D + 1>;
 
@@ -29,24 +32,6 @@ inline constexpr int kMaxSubdivisionDepth = 30;  // cells of width 2^-30; closer
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline constexpr int kBinomial[5][5] = {
     {1, 0, 0, 0, 0}, {1, 1, 0, 0, 0}, {1, 2, 1, 0, 0}, {1, 3, 3, 1, 0}, {1, 4, 6, 4, 1}};
-
-/// The next double above x, for finite x >= 0 (every cell of this stage lies in [0, 1]): the bit
-/// patterns of the non-negative doubles are ordered as their values, so it is the pattern plus
-/// one (std::nextafter, a library call, showed in profiles of the narrowing loops).
-inline double next_up_nonnegative(double x) {
-  if (x == 0) return std::numeric_limits<double>::denorm_min();  // also for -0.0
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  ++bits;
-  std::memcpy(&x, &bits, sizeof bits);
-  return x;
-}
-
-inline int certain_sign(const Interval& x) {
-  if (x.inf() > 0) return 1;
-  if (x.sup() < 0) return -1;
-  return 0;  // contains zero (or NaN bounds)
-}
 
 /// lcm of C(D, 0..D): 1, 1, 2, 3, 12.
 inline constexpr int kBinomialLcm[5] = {1, 1, 2, 3, 12};
@@ -92,16 +77,6 @@ enum class Isolation { complete, failed };
 /// Root cells of one polynomial: at most its degree (4), so no allocation on this path.
 using RootCells = boost::container::small_vector<RootCell, 4>;
 
-/// Sign class of an interval: exactly [0, 0] is a certain zero (it encloses only 0).
-enum class SignClass { negative, zero, positive, unknown };
-
-inline SignClass classify(const Interval& x) {
-  if (x.inf() > 0) return SignClass::positive;
-  if (x.sup() < 0) return SignClass::negative;
-  if (x.inf() == 0 && x.sup() == 0) return SignClass::zero;
-  return SignClass::unknown;
-}
-
 /// Appends the roots in the cell [lo, hi] (Bernstein coefficients b) in increasing order; the
 /// roots at the cell's ends are the caller's. Descartes' rule in the Bernstein basis counts
 /// sign changes among the nonzero coefficients. `first` / `last`, when not unknown, are the
@@ -141,10 +116,6 @@ Isolation isolate(const Bernstein<D>& b, double lo, double hi, int depth, RootCe
     return Isolation::failed;
   if (classify(left[D]) == SignClass::zero) out.push_back(RootCell{mid, mid, 0});
   return isolate<D>(right, mid, hi, depth + 1, out, SignClass::unknown, s[D]);
-}
-
-inline SignClass sign_class(int sign) {
-  return sign > 0 ? SignClass::positive : sign < 0 ? SignClass::negative : SignClass::zero;
 }
 
 /// The roots in [0, 1] of a polynomial not identically zero, in increasing order, exact zeros

@@ -21,7 +21,7 @@
 
 #include <cmath>
 
-namespace exactccd::filter::double_word {
+namespace exactccd::numeric::double_word {
 
 constexpr double kRelative = 0x1p-102;
 constexpr double kAbsolute = 0x1p-1000;
@@ -133,4 +133,4 @@ inline int certain_sign(const Approx& v) {
   return 0;
 }
 
-}  // namespace exactccd::filter::double_word
+}  // namespace exactccd::numeric::double_word

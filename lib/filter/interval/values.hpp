@@ -23,7 +23,7 @@
 
 #include "contact/contact_polynomials.hpp"
 #include "contact/contact_rule.hpp"
-#include "filter/interval_isolation.hpp"
+#include "filter/interval/isolation.hpp"
 
 namespace exactccd::filter::interval {
 
