@@ -264,7 +264,8 @@ class Surd:
 
 @dataclass
 class RootIn:
-    """The unique root of `poly` (a sympy expression in t) in [lo, hi]."""
+    """The unique root of `poly` (a sympy expression in t) in [lo, hi], and its smallest
+    root in [0, hi] (the derivations claim the earliest root)."""
     poly: object
     lo: Fraction
     hi: Fraction
@@ -273,6 +274,7 @@ class RootIn:
     def alg(self):
         f = sp.Poly(self.poly, T, domain="QQ").sqf_part()
         assert f.count_roots(qq(self.lo), qq(self.hi)) == 1
+        assert f.count_roots(0, qq(self.lo)) == 0
         return Alg(f, self.lo, self.hi)
 
 
@@ -797,6 +799,11 @@ case("ee28", "ee", RZ, STATIC, VERT("1.25", -1, 1) + [("0.75", 1, "1.25"), ("0.7
 case("ee29", "ee", RZ, STATIC, VERT("1.25", "0.1875", 1) + B_ALONG_X, Fraction(1, 2),
      2 * t**2 - 5 * t + 2, "the lines come within d = 5/16 before the segments do (A's closest "
      "point clamped to its endpoint z = 3/16)", d="0.3125")
+case("ee30", "ee", RZ, STATIC, [(0, 0, 0), ("1.25", 0, 0), ("0.75", "1.25", 0), ("0.75", 2, 0)],
+     Fraction(1, 2), 2 * t**2 - 5 * t + 2, "ee27 with tmax = 1/2: contact at tmax", d="0.25",
+     tmax="0.5")
+
+# ---- edge-edge, general motion: both bodies translating and rotating about other axes ----
 GEN_EE_A = pose(c1=(0, "0.25", 0), q1=(1, 0, 0, 1))
 GEN_EE_B = pose(c0=(1, 1, 0), c1=(1, "0.25", "0.25"), q1=(1, "0.25", 0, 0))
 GEN_EE_PTS = [(0, 0, 0), (2, 0, 0), (0, 0, -1), (0, 0, 1)]
@@ -819,9 +826,6 @@ case("ee32", "ee", GEN_EE_A, GEN_EE_B, GEN_EE_PTS,
             "(t^2+16)^2 - 4096 t^4), Q = t^5 + t^4 - 19t^3 + 15t^2 + 48t - 16, in (7/32, 15/64)"),
      DECIC_EE, "ee31 at d = 1/4: the line-line distance reaches d at a root of a degree-10 "
      "polynomial", d="0.25", facts=[(GEN_EE_S, "0.5", "0.75"), (GEN_EE_U, "0.25", "0.5")])
-case("ee30", "ee", RZ, STATIC, [(0, 0, 0), ("1.25", 0, 0), ("0.75", "1.25", 0), ("0.75", 2, 0)],
-     Fraction(1, 2), 2 * t**2 - 5 * t + 2, "ee27 with tmax = 1/2: contact at tmax", d="0.25",
-     tmax="0.5")
 
 # ------------------------------------------------------------------------------------------
 # Checking and writing
