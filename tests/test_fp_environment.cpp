@@ -572,7 +572,7 @@ std::vector<std::optional<TimeInterval>> separation_answers(const ControlState& 
   std::mt19937_64 rng(5);
   std::uniform_int_distribution<int> c(-2, 2);
   int kind_index = 0;
-  kinds::for_each_separation_kind([&](auto k) {
+  kinds::for_each_kind([&](auto k) {
     using Kind = decltype(k);
     using Q = typename Kind::template Query<double>;
     for (int i = 0; i < 18; ++i) {

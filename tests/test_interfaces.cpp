@@ -169,7 +169,7 @@ TEST(CApi, QuerySizes) {
 TEST(CApi, EveryKindWithSeparationMatchesCore) {
   int checked = 0;
   int i = 0;
-  kinds::for_each_separation_kind([&](auto k) {
+  kinds::for_each_kind([&](auto k) {
     using Query = typename decltype(k)::template Query<double>;
     for (const Query& q : grid<Query>(40 + i, 60)) {
       const CcdParams p{checked % 2 ? 0.25 : 0.0, checked % 3 ? 1.0 : 0.5};

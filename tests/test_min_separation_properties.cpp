@@ -36,6 +36,7 @@
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
 #include "io/benchmark_csv.hpp"
+#include "kinds/primitive_kinds.hpp"
 #include "tests/test_support.hpp"
 
 namespace exactccd {
@@ -73,15 +74,10 @@ struct Tag {
   using type = Q;
 };
 
+/// f(Tag<Query>{}) for the double query type of every kind (kinds::for_each_kind).
 template <class F>
-void for_each_kind(F&& f) {
-  f(Tag<VertexFaceQuery>{});
-  f(Tag<EdgeEdgeQuery>{});
-  f(Tag<PointEdgeQuery>{});
-  f(Tag<PointPointQuery>{});
-  f(Tag<EdgeEdge2dQuery>{});
-  f(Tag<PointEdge2dQuery>{});
-  f(Tag<PointPoint2dQuery>{});
+void for_each_query_type(F&& f) {
+  kinds::for_each_kind([&](auto kind) { f(Tag<typename decltype(kind)::template Query<double>>{}); });
 }
 
 using Row = std::array<double, 3>;  // a point; z = 0 for the 2D kinds
@@ -469,7 +465,7 @@ TEST(MinSeparationCgal, RandomQueries) {
   std::mt19937_64 rng(101);
   Report rep;
   Tally tally;
-  for_each_kind([&](auto tag) { random_group<typename decltype(tag)::type>(rng, 200, rep, tally); });
+  for_each_query_type([&](auto tag) { random_group<typename decltype(tag)::type>(rng, 200, rep, tally); });
   rep.expect_clean("random queries");
   EXPECT_GT(tally.exact_time + tally.interval, 300u) << tally.str();
   std::cout << "[ info ] " << tally.str() << "\n";
@@ -497,7 +493,7 @@ TEST(MinSeparationCgal, DegenerateGridQueries) {
   std::mt19937_64 rng(202);
   Report rep;
   Tally tally;
-  for_each_kind([&](auto tag) { grid_group<typename decltype(tag)::type>(rng, 300, rep, tally); });
+  for_each_query_type([&](auto tag) { grid_group<typename decltype(tag)::type>(rng, 300, rep, tally); });
   rep.expect_clean("grid queries");
   EXPECT_GT(tally.exact_time, 100u) << tally.str();
   std::cout << "[ info ] " << tally.str() << "\n";
@@ -533,7 +529,7 @@ TEST(MinSeparationCgal, NearQueries) {
   std::mt19937_64 rng(303);
   Report rep;
   Tally tally;
-  for_each_kind([&](auto tag) { near_group<typename decltype(tag)::type>(rng, 140, rep, tally); });
+  for_each_query_type([&](auto tag) { near_group<typename decltype(tag)::type>(rng, 140, rep, tally); });
   rep.expect_clean("near queries");
   EXPECT_GT(tally.exact_time + tally.interval, 1000u) << tally.str();
   std::cout << "[ info ] " << tally.str() << "\n";
@@ -688,7 +684,7 @@ TEST(MinSeparationCgal, ConstructedExactContacts) {
   std::mt19937_64 rng(404);
   Report rep;
   Tally tally;
-  for_each_kind([&](auto tag) { constructed_group<typename decltype(tag)::type>(rng, 60, rep, tally); });
+  for_each_query_type([&](auto tag) { constructed_group<typename decltype(tag)::type>(rng, 60, rep, tally); });
   rep.expect_clean("constructed contacts");
   EXPECT_GT(tally.exact_time, 50u) << tally.str();
   EXPECT_GT(tally.interval, 200u) << tally.str();
@@ -912,7 +908,7 @@ TEST(MinSeparationInvariance, VertexAndPrimitivePermutations) {
   std::mt19937_64 rng(606);
   Report rep;
   std::size_t compared = 0;
-  for_each_kind([&](auto tag) {
+  for_each_query_type([&](auto tag) {
     using Q = typename decltype(tag)::type;
     int i = 0;
     for (const auto& [r, origin] : invariance_sources<Q>(rng, 100)) {
@@ -961,7 +957,7 @@ TEST(MinSeparationInvariance, TranslationsIsometriesCommonVelocityAndScaling) {
   std::mt19937_64 rng(808);
   Report rep;
   std::size_t compared = 0;
-  for_each_kind([&](auto tag) {
+  for_each_query_type([&](auto tag) {
     using Q = typename decltype(tag)::type;
     std::uniform_int_distribution<int> ex(-40, 40), tr(-1000, 1000);
     for (int i = 0; i < 150; ++i) {
@@ -1087,7 +1083,7 @@ TEST(MinSeparationApi, RationalOverloadsAgreeWithDoubles) {
   std::mt19937_64 rng(1001);
   Report rep;
   std::size_t compared = 0;
-  for_each_kind([&](auto tag) {
+  for_each_query_type([&](auto tag) {
     using Q = typename decltype(tag)::type;
     for (const auto& [r, origin] : invariance_sources<Q>(rng, 20)) {
       for (const CcdParams& p : {CcdParams{1e-2 * bbox_size<Q>(r), 1.0}, CcdParams{0.125, 0.375}}) {

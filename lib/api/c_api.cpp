@@ -49,14 +49,13 @@ exactccd_status toi_impl(const double* query, int* collides, double* lo, double*
 }
 
 
-/// Calls f(Kind{}) for the kind with the C enum value `kind` (for_each_separation_kind's
-/// order); false for an unknown value.
+/// Calls f(Kind{}) for the kind whose exactccd_kind value is `kind` (Kind::c_kind); false for an
+/// unknown value.
 template <class F>
 bool visit_c_kind(int kind, F&& f) {
-  int i = 0;
   bool found = false;
-  kinds::for_each_separation_kind([&](auto k) {
-    if (i++ == kind) {
+  kinds::for_each_kind([&](auto k) {
+    if (decltype(k)::c_kind == kind) {
       f(k);
       found = true;
     }

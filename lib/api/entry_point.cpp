@@ -80,7 +80,7 @@ std::optional<TimeInterval> answer_rational_query(const RationalQuery& q, const 
   return separation::exact_toi(q, p);
 }
 
-// The entry points of every kind (kinds::for_each_separation_kind; tests/api/test_entry_points
+// The entry points of every kind (kinds::for_each_kind; tests/api/test_entry_points
 // calls each through the list, so that a kind missing here fails to link).
 template std::optional<TimeInterval> answer_query(const VertexFaceQuery&, const CcdParams&, Method, bool, StageCounters*);
 template std::optional<TimeInterval> answer_query(const EdgeEdgeQuery&, const CcdParams&, Method, bool, StageCounters*);

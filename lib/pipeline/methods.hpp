@@ -20,10 +20,10 @@
 
 namespace exactccd::pipeline {
 
-/// The kinds whose contact question has stages of its own (the volume filter and the contact
-/// rule of lib/contact): vertex-face and edge-edge.
+/// The kinds whose contact question has stages of its own (kinds::HasContactStages: the volume
+/// filter and the contact rule of lib/contact): vertex-face and edge-edge.
 template <class Query>
-inline constexpr bool has_contact_stages = std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>;
+inline constexpr bool has_contact_stages = kinds::HasContactStages<kinds::kind_of<Query>>::value;
 
 /// The contact (d = 0) question of a query as an edge-edge query with the same answer and TOI:
 /// a point is a zero-length edge, and a 2D query lies in the plane z = 0.

@@ -82,7 +82,7 @@ std::optional<TimeInterval> exact_toi(const RationalQuery& q, const RationalCcdP
   return result;
 }
 
-// The exact path for every kind of the minimum-separation question (kinds::for_each_separation_kind).
+// The exact path for every kind of the minimum-separation question (kinds::for_each_kind).
 template std::optional<TimeInterval> exact_toi(const RationalVertexFaceQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
 template std::optional<TimeInterval> exact_toi(const RationalEdgeEdgeQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
 template std::optional<TimeInterval> exact_toi(const RationalPointEdgeQuery&, const RationalCcdParams&, const kinds::FeatureMask&);

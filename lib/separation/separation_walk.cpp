@@ -237,7 +237,7 @@ pipeline::Outcome separation_walk(const Query& q, const pipeline::Question& ques
   return SeparationWalk<Kind>(points3<double>(q), question, findings).run();
 }
 
-// The walk for every kind of the minimum-separation question (kinds::for_each_separation_kind).
+// The walk for every kind of the minimum-separation question (kinds::for_each_kind).
 template pipeline::Outcome separation_walk(const VertexFaceQuery&, const pipeline::Question&, pipeline::Findings&);
 template pipeline::Outcome separation_walk(const EdgeEdgeQuery&, const pipeline::Question&, pipeline::Findings&);
 template pipeline::Outcome separation_walk(const PointEdgeQuery&, const pipeline::Question&, pipeline::Findings&);

@@ -579,7 +579,7 @@ PYBIND11_MODULE(_exactccd, m) {
     }
   });
 
-  kinds::for_each_separation_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
+  kinds::for_each_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
 
   m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);
   m.attr("EDGE_EDGE") = static_cast<int>(CollisionKind::edge_edge);
