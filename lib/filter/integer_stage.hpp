@@ -67,20 +67,20 @@ pipeline::Outcome fixed_integer_stage(const EdgeEdgeQuery& q, bool want_toi);
 /// Stage 3a in the contact question's stage list.
 struct FixedIntegerStage {
   static constexpr pipeline::Counter counter = &StageCounters::fixed_integer;  ///< counted as
-  /// The stage on work.query (also, after a collision was proved, for its TOI).
+  /// The stage on work.query() (also, after a collision was proved, for its TOI).
   template <class Query>
   pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
-    return fixed_integer_stage(work.query, work.question.want_toi);
+    return fixed_integer_stage(work.query(), work.question.want_toi);
   }
 };
 
 /// Stage 3 in the contact question's stage list.
 struct IntegerStage {
   static constexpr pipeline::Counter counter = &StageCounters::integer;  ///< counted as
-  /// The stage on work.query (also, after a collision was proved, for its TOI).
+  /// The stage on work.query() (also, after a collision was proved, for its TOI).
   template <class Query>
   pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
-    return integer_stage(work.query, work.question.want_toi);
+    return integer_stage(work.query(), work.question.want_toi);
   }
 };
 

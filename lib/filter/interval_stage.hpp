@@ -19,10 +19,10 @@ pipeline::Outcome interval_stage(const EdgeEdgeQuery& q, bool want_toi, pipeline
 /// Stage 2 in the contact question's stage list.
 struct IntervalStage {
   static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
-  /// The stage on work.query.
+  /// The stage on work.query().
   template <class Query>
   pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
-    return interval_stage(work.query, work.question.want_toi, work.findings);
+    return interval_stage(work.query(), work.question.want_toi, work.findings);
   }
 };
 

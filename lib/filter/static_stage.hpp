@@ -45,8 +45,8 @@ struct StaticQueryStage {
   /// Decides static queries, passes the others on.
   template <class Query>
   pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
-    if (!is_static(work.query)) return pipeline::Outcome::undecided();
-    if (!contact_at_end(work.query, 0)) return pipeline::Outcome::separate();
+    if (!is_static(work.query())) return pipeline::Outcome::undecided();
+    if (!contact_at_end(work.query(), 0)) return pipeline::Outcome::separate();
     return pipeline::Outcome::collides(TimeInterval{0.0, 0.0});
   }
 };

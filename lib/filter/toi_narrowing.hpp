@@ -30,7 +30,7 @@ struct ToiInCellStage {
   template <class Query>
   pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
     if (!work.collides || !work.findings.toi_cell) return pipeline::Outcome::undecided();
-    if (const auto toi = toi_in_cell(work.query, *work.findings.toi_cell)) return pipeline::Outcome::collides(toi);
+    if (const auto toi = toi_in_cell(work.query(), *work.findings.toi_cell)) return pipeline::Outcome::collides(toi);
     return pipeline::Outcome::undecided();
   }
 };

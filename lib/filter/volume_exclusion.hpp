@@ -240,10 +240,10 @@ inline bool volume_excluded(const Query& q) {
 /// could not apply (volume_out_of_range: worth a retry on the query scaled towards 1).
 struct VolumeExclusionStage {
   static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
-  /// The stage on work.query.
+  /// The stage on work.query().
   template <class Query>
   pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
-    const Exclusion e = volume_exclusion(work.query);
+    const Exclusion e = volume_exclusion(work.query());
     work.findings.volume_out_of_range = e == Exclusion::out_of_range;
     return e == Exclusion::excluded ? pipeline::Outcome::separate() : pipeline::Outcome::undecided();
   }

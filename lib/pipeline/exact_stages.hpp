@@ -16,7 +16,7 @@ struct ExactContactStage {
   /// The exact answer, with the TOI when asked.
   template <class Query>
   Outcome operator()(const Work<Query>& work) const {
-    const auto rational = exact::to_rational(work.query);
+    const auto rational = exact::to_rational(work.query());
     if (!work.question.want_toi) return exact::ccd(rational) ? Outcome::collides() : Outcome::separate();
     const auto toi = exact::toi(rational);
     return toi ? Outcome::collides(toi) : Outcome::separate();
@@ -31,7 +31,7 @@ struct ExactSeparationStage {
   template <class Query>
   Outcome operator()(const Work<Query>& work) const {
     const CcdParams& p = work.question.params;
-    const auto toi = separation::exact_toi(exact::to_rational(work.query),
+    const auto toi = separation::exact_toi(exact::to_rational(work.query()),
                                            RationalCcdParams{mpq_class(p.min_distance), mpq_class(p.tmax)}, work.findings.use);
     return toi ? Outcome::collides(toi) : Outcome::separate();
   }

@@ -58,7 +58,7 @@ struct ContactAsEdgeEdgeStage {
   /// The contact stages' answer.
   template <class Query>
   Outcome operator()(const Work<Query>& work) const {
-    const auto toi = contact_question(as_edge_edge(work.query), work.question, work.counters);
+    const auto toi = contact_question(as_edge_edge(work.query()), work.question, work.counters);
     return toi ? Outcome::collides(toi) : Outcome::separate();
   }
 };
@@ -76,7 +76,7 @@ struct ContactProbeStage {
   Outcome operator()(Work<Query>& work) const {
     if (work.question.want_toi) return Outcome::undecided();
     StageCounters probe;
-    const auto touch = contact_of_any_kind(work.query, Question{{0.0, work.question.params.tmax}, false}, &probe);
+    const auto touch = contact_of_any_kind(work.query(), Question{{0.0, work.question.params.tmax}, false}, &probe);
     if (touch) {
       if (work.counters) *work.counters += probe;
       return Outcome::collides(TimeInterval{0.0, touch->hi});

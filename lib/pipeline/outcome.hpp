@@ -74,17 +74,33 @@ struct Findings {
 
 /// A query on its way through the stages.
 template <class Query>
-struct Work {
-  /// The query `q` asked `question`, counted in `counters` (may be null).
+class Work {
+ public:
+  /// The query `q` (referred to, not copied: it must outlive the Work) asked `question`, counted
+  /// in `counters` (may be null).
   Work(const Query& q, const Question& question, StageCounters* counters)
-      : query(q), question(question), counters(counters) {}
+      : question(question), counters(counters), current_(&q) {}
+  Work(const Query&&, const Question&, StageCounters*) = delete;  ///< not from a temporary
+  Work(const Work&) = delete;
+  Work& operator=(const Work&) = delete;
 
-  Query query;        ///< as the stages see it (a stage may rescale it exactly)
+  /// The query as the stages see it.
+  const Query& query() const { return *current_; }
+  /// Storage for an exactly equivalent query (the same answer and TOI: a power-of-two scaling)
+  /// that a stage writes; use_replacement() makes the later stages see it.
+  Query& replacement() { return replacement_; }
+  /// The later stages see replacement() as the query.
+  void use_replacement() { current_ = &replacement_; }
+
   Question question;  ///< what is asked
   StageCounters* counters = nullptr;  ///< where the deciding stage is counted (may be null)
   /// An earlier stage proved a collision; the later ones only narrow its TOI.
   bool collides = false;
   Findings findings;  ///< what earlier stages learned
+
+ private:
+  const Query* current_;
+  Query replacement_;  // storage for replace_query (left uninitialised until then)
 };
 
 }  // namespace exactccd::pipeline

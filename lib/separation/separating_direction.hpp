@@ -265,7 +265,7 @@ struct SeparatingDirectionStage {
   /// Separate when a direction certifies it; else undecided.
   template <class Query>
   pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
-    if (separated_beyond(work.query, work.question.params.min_distance)) return pipeline::Outcome::separate();
+    if (separated_beyond(work.query(), work.question.params.min_distance)) return pipeline::Outcome::separate();
     return pipeline::Outcome::undecided();
   }
 };

@@ -45,10 +45,10 @@ pipeline::Outcome separation_walk(const Query& q, const pipeline::Question& ques
 /// used on the way (an exact sign here, or the contact probe before it).
 struct SeparationWalkStage {
   static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
-  /// The walk on work.query.
+  /// The walk on work.query().
   template <class Query>
   pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
-    pipeline::Outcome o = separation_walk(work.query, work.question, work.findings);
+    pipeline::Outcome o = separation_walk(work.query(), work.question, work.findings);
     if (work.findings.used_gmp) o.counted_as = &StageCounters::integer;
     return o;
   }
