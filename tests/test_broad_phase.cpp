@@ -14,7 +14,7 @@
 #include "exactccd/exactccd.hpp"
 #include "scene/box_tree.hpp"
 #include "scene/broad_phase.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene_support.hpp"
 

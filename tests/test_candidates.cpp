@@ -16,7 +16,7 @@
 
 #include "exactccd/exactccd.h"
 #include "exactccd/exactccd.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene_support.hpp"
 

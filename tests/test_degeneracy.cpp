@@ -1,5 +1,5 @@
 // Degeneracy categories (lib/exact/degeneracy): each label on a catalogue case built to have it.
-#include "exact/degeneracy.hpp"
+#include "degeneracy/degeneracy.hpp"
 
 #include <gtest/gtest.h>
 

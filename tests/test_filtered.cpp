@@ -45,7 +45,7 @@
 #include "filter/static_stage.hpp"
 #include "filter/toi_narrowing.hpp"
 #include "filter/volume_exclusion.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 #ifndef EXACTCCD_SAMPLE_QUERIES_DIR
 #define EXACTCCD_SAMPLE_QUERIES_DIR "/work/shared/data/sample-queries"

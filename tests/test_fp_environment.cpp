@@ -30,7 +30,7 @@
 #include "numeric/fp_environment.hpp"
 #include "io/benchmark_csv.hpp"
 #include "io/obj.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 #include "fuzz/families.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "scene/scene_primitives.hpp"

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "exactccd/exactccd.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 
 namespace exactccd {
 namespace {

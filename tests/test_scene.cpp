@@ -10,7 +10,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene_support.hpp"
 
 namespace exactccd {

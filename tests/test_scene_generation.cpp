@@ -15,8 +15,8 @@
 #include "exactccd/exactccd.hpp"
 #include "io/benchmark_csv.hpp"
 #include "scene/broad_phase.hpp"
-#include "scene/procedural_scenes.hpp"
-#include "scene/sim_queries.hpp"
+#include "scenes/procedural_scenes.hpp"
+#include "scenes/sim_queries.hpp"
 
 #ifndef EXACTCCD_SOURCE_DIR
 #define EXACTCCD_SOURCE_DIR "."

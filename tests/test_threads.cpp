@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "test_support.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace exactccd {
 namespace {

@@ -18,7 +18,7 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace exactccd {
 namespace {

@@ -10,7 +10,7 @@
 #include <map>
 
 #include "exactccd/exactccd.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 
 namespace {

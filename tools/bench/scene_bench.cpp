@@ -1,4 +1,4 @@
-// Scene-level CCD per time step of the cloth-on-sphere scene (lib/scene/procedural_scenes.hpp)
+// Scene-level CCD per time step of the cloth-on-sphere scene (lib/scenes/procedural_scenes.hpp)
 // at resolutions 16, 32 and 64 (Google Benchmark): the broad phase, the narrow phase over the
 // same candidates with the filtered (exact) and the naive (textbook doubles, not robust)
 // methods, and the whole scene functions on one thread (find_collisions also on two, by wall
@@ -27,9 +27,9 @@
 
 #include "exactccd/exactccd.hpp"
 #include "scene/parallel.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace {
 

@@ -15,7 +15,7 @@
 #include "filter/interval_stage.hpp"
 #include "filter/volume_exclusion.hpp"
 #include "pipeline/contact_question.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include "kinds/primitive_kinds.hpp"
 #include "options.hpp"
 #include "scene/parallel.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace exactccd::cli {
 

@@ -10,7 +10,7 @@
 #include "io/mesh_file.hpp"
 #include "io/obj.hpp"
 #include "output_file.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "subcommands.hpp"
 

@@ -1,4 +1,4 @@
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "scene/sim_queries.hpp"
+#include "scenes/sim_queries.hpp"
 
 #include <algorithm>
 

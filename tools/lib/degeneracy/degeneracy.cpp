@@ -1,4 +1,4 @@
-#include "exact/degeneracy.hpp"
+#include "degeneracy/degeneracy.hpp"
 
 #include "contact/contact_polynomials.hpp"
 #include "exact/integer_poly.hpp"
