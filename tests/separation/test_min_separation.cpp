@@ -22,7 +22,7 @@
 #include "exactccd/rational.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "separation/exact_separation.hpp"
-#include "test_support.hpp"
+#include "tests/test_support.hpp"
 
 namespace exactccd {
 namespace {

@@ -16,7 +16,7 @@
 #include "scene/broad_phase.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
-#include "scene_support.hpp"
+#include "tests/scene_support.hpp"
 
 namespace exactccd {
 namespace {

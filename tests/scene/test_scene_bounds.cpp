@@ -11,7 +11,7 @@
 #include "exactccd/rational.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene/time_bounds.hpp"
-#include "test_support.hpp"
+#include "tests/test_support.hpp"
 
 namespace exactccd {
 namespace {

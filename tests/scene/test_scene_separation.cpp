@@ -15,7 +15,7 @@
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
 #include "scene/broad_phase.hpp"
-#include "scene_support.hpp"
+#include "tests/scene_support.hpp"
 
 namespace exactccd {
 namespace {

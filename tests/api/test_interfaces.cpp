@@ -9,7 +9,7 @@
 #include "exactccd/eigen.hpp"
 #include "exactccd/exactccd.h"
 #include "kinds/primitive_kinds.hpp"
-#include "test_support.hpp"
+#include "tests/test_support.hpp"
 
 namespace exactccd {
 namespace {

@@ -11,7 +11,7 @@
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
 #include "scenes/procedural_scenes.hpp"
-#include "scene_support.hpp"
+#include "tests/scene_support.hpp"
 
 namespace exactccd {
 namespace {

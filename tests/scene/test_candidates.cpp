@@ -18,7 +18,7 @@
 #include "exactccd/exactccd.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
-#include "scene_support.hpp"
+#include "tests/scene_support.hpp"
 
 namespace exactccd {
 namespace {

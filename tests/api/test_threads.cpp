@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "test_support.hpp"
+#include "tests/test_support.hpp"
 #include "methods/methods.hpp"
 
 namespace exactccd {
