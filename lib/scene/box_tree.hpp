@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -75,9 +76,10 @@ class BoxTree {
   /// (closed boxes, exact) and which lie below the node pair `task` (from pair_tasks(other));
   /// when `other` is this tree, every unordered pair i != j once, as (min, max). Each pair of
   /// the trees is below exactly one task of pair_tasks, so the tasks together report each
-  /// overlapping pair exactly once (in no particular order).
+  /// overlapping pair exactly once (in no particular order). A report returning bool stops the
+  /// traversal by returning false; pairs_from then returns false (else true).
   template <class Report>
-  void pairs_from(const BoxTree& other, NodePair task, Report&& report) const {
+  bool pairs_from(const BoxTree& other, NodePair task, Report&& report) const {
     const bool self = &other == this;
     NodePair stack[kPairStack];
     int top = 0;
@@ -87,7 +89,7 @@ class BoxTree {
       if (!overlap(nodes_[a], other.nodes_[b])) continue;
       const bool leaf_a = a >= first_leaf_, leaf_b = b >= other.first_leaf_;
       if (leaf_a && leaf_b) {
-        leaf_pairs(other, a, b, self, report);
+        if (!leaf_pairs(other, a, b, self, report)) return false;
       } else if (self && a == b) {  // same depth: both internal
         stack[top++] = {2 * a, 2 * a};
         stack[top++] = {2 * a, 2 * a + 1};
@@ -103,6 +105,7 @@ class BoxTree {
           for (int cb = 2 * b; cb <= 2 * b + 1; ++cb) stack[top++] = {ca, cb};
       }
     }
+    return true;
   }
 
  private:
@@ -114,9 +117,10 @@ class BoxTree {
   static constexpr int kPairStack = 192;
 
   /// The overlapping primitive pairs of leaf node a of this tree and leaf node b of `other`
-  /// (self: same tree, each unordered pair once as (min, max), none with itself).
+  /// (self: same tree, each unordered pair once as (min, max), none with itself); false when
+  /// the report stopped the traversal.
   template <class Report>
-  void leaf_pairs(const BoxTree& other, int a, int b, bool self, Report& report) const {
+  bool leaf_pairs(const BoxTree& other, int a, int b, bool self, Report& report) const {
     const int begin_a = (a - first_leaf_) * kLeafSize, end_a = std::min(begin_a + kLeafSize, size());
     const int begin_b = (b - other.first_leaf_) * kLeafSize, end_b = std::min(begin_b + kLeafSize, other.size());
     // Only the boxes of each leaf that overlap the other leaf's box can be in a pair (it is the
@@ -135,11 +139,20 @@ class BoxTree {
         if (self && a == b && l <= k) continue;
         if (!overlap(box, other.leaf_boxes_[l])) continue;
         const int j = other.order_[l];
-        if (self)
-          report(std::min(i, j), std::max(i, j));
-        else
-          report(i, j);
+        if (!(self ? go_on(report, std::min(i, j), std::max(i, j)) : go_on(report, i, j))) return false;
       }
+    }
+    return true;
+  }
+
+  /// report(i, j), and whether to go on (a report returning void always goes on).
+  template <class Report>
+  static bool go_on(Report& report, int i, int j) {
+    if constexpr (std::is_void_v<std::invoke_result_t<Report&, int, int>>) {
+      report(i, j);
+      return true;
+    } else {
+      return report(i, j);
     }
   }
 

@@ -82,6 +82,23 @@ void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   }
 }
 
+std::vector<PairTask> BroadPhaseTrees::pair_tasks(unsigned threads) const {
+  if (!built_) throw std::logic_error("BroadPhaseTrees::pair_tasks before fit");
+  const std::size_t wanted = threads > 1 ? kTasksPerThread * threads : 1;
+  std::vector<PairTask> tasks;
+  const auto add = [&](CollisionKind kind, const BoxTree& a, const BoxTree& b) {
+    for (const BoxTree::NodePair& nodes : a.pair_tasks(b, wanted)) tasks.push_back({kind, nodes});
+  };
+  // The largest kind first: the dynamic hand-out then ends on small pieces.
+  add(CollisionKind::edge_edge, edge_tree_, edge_tree_);
+  if (!triangles_.empty()) add(CollisionKind::vertex_face, vertex_tree_, triangle_tree_);
+  if (!points_.empty()) {
+    add(CollisionKind::point_edge, point_tree_, edge_tree_);
+    add(CollisionKind::point_point, point_tree_, point_tree_);
+  }
+  return tasks;
+}
+
 Candidates BroadPhaseTrees::candidates(unsigned threads) const {
   if (!built_) throw std::logic_error("BroadPhaseTrees::candidates before fit");
   const auto any = [](int, int) { return true; };

@@ -3,12 +3,27 @@
 // boxes change (exactccd::SceneBroadPhase reuses one across calls).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "scene/box_tree.hpp"
 #include "scene/broad_phase.hpp"
 
 namespace exactccd::scene {
+
+/// A candidate pair as the broad phase finds it: its kind and its two indices, as in
+/// SceneCandidates ({vertex, triangle}, {edge i, edge j} with i < j into the edges, {point,
+/// edge}, {point p, point q} with p < q).
+struct FoundPair {
+  CollisionKind kind = CollisionKind::vertex_face;  ///< which kind of pair
+  std::array<int, 2> ij{};                          ///< its two indices
+};
+
+/// A piece of the broad phase's work: the pairs of one kind below one node pair of its trees.
+struct PairTask {
+  CollisionKind kind = CollisionKind::vertex_face;  ///< which kind (which two trees)
+  BoxTree::NodePair nodes{};                        ///< the node pair (BoxTree::pair_tasks)
+};
 
 /// Trees over one topology (triangles, edges, vertex-face vertices, isolated points, as in
 /// find_candidates; kept by reference: they must outlive this object and not change).
@@ -28,6 +43,42 @@ class BroadPhaseTrees {
   /// is found once by a traversal of two trees (or of one against itself). Up to `threads`
   /// threads; the result does not depend on them.
   Candidates candidates(unsigned threads) const;
+
+  /// Independent pieces of work that together find every pair of candidates() exactly once
+  /// (every kind's node pairs, about 32 per thread and kind when threads > 1, one per kind
+  /// otherwise); for the streamed broad phase (pair_stream.hpp).
+  std::vector<PairTask> pair_tasks(unsigned threads) const;
+
+  /// Calls report(FoundPair) for every pair of candidates() below the task (in no particular
+  /// order) until report returns false; returns false when it did.
+  template <class Report>
+  bool visit(const PairTask& task, Report&& report) const {
+    const CollisionKind kind = task.kind;
+    switch (kind) {
+      case CollisionKind::vertex_face:
+        return vertex_tree_.pairs_from(triangle_tree_, task.nodes, [&](int i, int t) {
+          const int v = vertices_[static_cast<std::size_t>(i)];
+          const Triangle& tri = triangles_[static_cast<std::size_t>(t)];
+          return tri[0] == v || tri[1] == v || tri[2] == v || report(FoundPair{kind, {{v, t}}});
+        });
+      case CollisionKind::edge_edge:
+        return edge_tree_.pairs_from(edge_tree_, task.nodes, [&](int i, int j) {
+          const Edge& a = edges_[static_cast<std::size_t>(i)];
+          const Edge& b = edges_[static_cast<std::size_t>(j)];
+          const bool share = a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+          return share || report(FoundPair{kind, {{i, j}}});  // i < j
+        });
+      case CollisionKind::point_edge:  // isolated points are on no edge: no shared vertex
+        return point_tree_.pairs_from(edge_tree_, task.nodes, [&](int i, int e) {
+          return report(FoundPair{kind, {{points_[static_cast<std::size_t>(i)], e}}});
+        });
+      case CollisionKind::point_point:  // points ascending: i < j gives p < q
+        return point_tree_.pairs_from(point_tree_, task.nodes, [&](int i, int j) {
+          return report(FoundPair{kind, {{points_[static_cast<std::size_t>(i)], points_[static_cast<std::size_t>(j)]}}});
+        });
+    }
+    return true;
+  }
 
  private:
   const std::vector<Triangle>& triangles_;
