@@ -257,7 +257,13 @@ class SceneBroadPhase {
 /// edge; a coplanar fold-over beyond it is not reported). Degenerate triangles (collinear or
 /// coincident positions) are their hulls. Throws std::invalid_argument on non-finite
 /// coordinates, out-of-range or repeated indices.
+/// Runs on one thread (the overload below takes a thread count).
 bool intersection_free(const std::vector<Vec3>& positions,
                        const std::vector<std::array<int, 3>>& triangles);
+
+/// intersection_free(positions, triangles) on `threads` threads (0: every hardware thread, at
+/// most 1024); the answer does not depend on them. Stops at the first intersecting pair found.
+bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
+                       unsigned threads);
 
 }  // namespace exactccd

@@ -18,9 +18,10 @@ struct StepStats {
   double setup_seconds = 0;
   /// Wall seconds of the streamed loop (tree traversal and narrow phase together, in parallel).
   double stream_seconds = 0;
-  /// Thread seconds of the loop's tree traversal, summed over the workers.
+  /// CPU seconds of the loop's tree traversal, summed over the workers (thread CPU-time clock).
   double traversal_thread_seconds = 0;
-  /// Thread seconds of the loop's narrow phase (the batches of pairs decided), summed over the workers.
+  /// CPU seconds of the loop's narrow phase (the batches of pairs decided), summed over the
+  /// workers (thread CPU-time clock).
   double narrow_thread_seconds = 0;
   /// Workers of the loop.
   unsigned workers = 0;
