@@ -106,12 +106,12 @@ class PairTests {
   /// that the pair is not within d anywhere in [0, tmax].
   bool boxes_overlap(const PairSides& r) const {
     if (params_.tmax < 1) return may_touch_until(r, params_.tmax);
-    const auto box_of = [&](const Side& side) {
-      Box box = empty_box();
-      for (int i = 0; i < side.n; ++i) add_vertex(box, lift(x0_[side.v[i]]), lift(x1_[side.v[i]]));
-      return inflated(box, params_.min_distance);
-    };
-    return overlap(box_of(r.side[0]), box_of(r.side[1]));
+    Box a = swept_box_of(r.side[0]), b = swept_box_of(r.side[1]);
+    if (params_.min_distance > 0) {
+      a = inflated(a, params_.min_distance);
+      b = inflated(b, params_.min_distance);
+    }
+    return overlap(a, b);
   }
 
   /// Whether the boxes of the pair's two primitives over the times [0, h] (h in [0, 1]), grown
@@ -144,6 +144,15 @@ class PairTests {
   }
 
  private:
+  /// The exact swept box over [0, 1] of a side's vertices (min and max of input coordinates).
+  Box swept_box_of(const Side& side) const {
+    const Vec3 p = lift(x0_[side.v[0]]), q = lift(x1_[side.v[0]]);
+    Box box{{{p.x < q.x ? p.x : q.x, p.y < q.y ? p.y : q.y, p.z < q.z ? p.z : q.z}},
+            {{p.x < q.x ? q.x : p.x, p.y < q.y ? q.y : p.y, p.z < q.z ? q.z : p.z}}};
+    for (int i = 1; i < side.n; ++i) add_vertex(box, lift(x0_[side.v[i]]), lift(x1_[side.v[i]]));
+    return box;
+  }
+
   const std::vector<Point>& x0_;
   const std::vector<Point>& x1_;
   CcdParams params_;
@@ -288,6 +297,37 @@ void decide_range(const Range& range, unsigned threads, Question& question) {
       if (!question(range.pair(k), k, w)) return false;
     return true;
   });
+}
+
+/// What reading one candidate of a checked range gives.
+enum class CandidateRead {
+  invalid,   ///< the candidate is malformed (stop: the caller reports it)
+  disjoint,  ///< its boxes over [0, tmax] grown by d do not overlap: it cannot collide
+  pair,      ///< its two sides, to decide
+};
+
+/// decide_range for a range whose candidates are checked as they are read: a range with
+/// CandidateRead read(k, PairSides& r) instead of pair(k), which also does the box test (so the
+/// question is asked with boxes_checked). An invalid candidate stops the loop. Returns true
+/// when every candidate was read and valid, false when the loop stopped early (a question's
+/// early exit or an invalid candidate: the caller then validates the whole range, so that bad
+/// input is reported, never answered).
+template <class Range, class Question>
+bool decide_checked_range(const Range& range, unsigned threads, Question& question) {
+  std::atomic<bool> stopped{false};
+  parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
+    PairSides r;
+    for (std::size_t k = begin; k < end; ++k) {
+      const CandidateRead read = range.read(k, r);
+      if (read == CandidateRead::disjoint) continue;
+      if (read == CandidateRead::invalid || !question(r, k, w)) {
+        stopped = true;
+        return false;
+      }
+    }
+    return true;
+  });
+  return !stopped.load();
 }
 
 /// Every colliding candidate of the range with its time of impact, as {k, toi}, ascending in k,

@@ -4,13 +4,17 @@
 #pragma once
 
 #include <array>
+#include <limits>
 
 #include "scene/broad_phase.hpp"
 
 namespace exactccd::scene {
 
 /// An empty box (lo = +inf, hi = -inf), the start of a union.
-Box empty_box();
+inline Box empty_box() {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return Box{{{inf, inf, inf}}, {{-inf, -inf, -inf}}};
+}
 
 /// Grows `box` to hold both positions of a vertex moving from p0 (t = 0) to p1 (t = 1): its
 /// exact swept box over [0, 1] (min and max of input coordinates: no rounding).
