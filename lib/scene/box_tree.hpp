@@ -9,11 +9,12 @@
 // Pairs are found by traversing two trees (or one against itself) together, from the node
 // pairs of pair_tasks() (independent pieces of work): each pair of primitives is met once.
 //
-// Exactness: a node box is the hull (exact min and max) of the boxes below it, so two
-// overlapping primitive boxes make every pair of node boxes above them overlap, and
-// pairs_from() reports exactly the primitive pairs whose boxes overlap (the same closed <= test
-// as overlap()), whatever the order is: the order (and a stale one after refit) only changes
-// the speed.
+// Exactness: the tree stores each primitive's box as a float box rounded outwards
+// (float_box.hpp: half the memory), and a node box is the hull (exact min and max) of the float
+// boxes below it; so two overlapping primitive boxes make their float boxes and every pair of
+// node boxes above them overlap, and pairs_from() reports every primitive pair whose boxes
+// overlap, and a few more whose float boxes overlap (the caller tests those on the exact double
+// boxes), whatever the order is: the order (and a stale one after refit) only changes the speed.
 #pragma once
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "scene/broad_phase.hpp"
+#include "scene/float_box.hpp"
 #include "scene/parallel.hpp"
 
 namespace exactccd::scene {
@@ -54,7 +56,7 @@ class BoxTree {
   void refit(std::size_t n, BoxOf&& box_of, unsigned threads) {
     require_size(n);
     parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) leaf_boxes_[k] = box_of(static_cast<std::size_t>(order_[k]));
+      for (std::size_t k = begin; k < end; ++k) leaf_boxes_[k] = float_box(box_of(static_cast<std::size_t>(order_[k])));
     });
     fit_nodes(threads);
   }
@@ -72,11 +74,12 @@ class BoxTree {
   /// dropped): independent pieces of work for pairs_from().
   std::vector<NodePair> pair_tasks(const BoxTree& other, std::size_t wanted) const;
 
-  /// Calls report(i, j) for every primitive i of this tree and j of `other` whose boxes overlap
-  /// (closed boxes, exact) and which lie below the node pair `task` (from pair_tasks(other));
-  /// when `other` is this tree, every unordered pair i != j once, as (min, max). Each pair of
-  /// the trees is below exactly one task of pair_tasks, so the tasks together report each
-  /// overlapping pair exactly once (in no particular order). A report returning bool stops the
+  /// Calls report(i, j) for every primitive i of this tree and j of `other` whose float boxes
+  /// overlap (closed; every pair whose boxes overlap, and a few more: the caller tests the
+  /// exact boxes) and which lie below the node pair `task` (from pair_tasks(other)); when
+  /// `other` is this tree, every unordered pair i != j once, as (min, max). Each pair of the
+  /// trees is below exactly one task of pair_tasks, so the tasks together report each pair
+  /// exactly once (in no particular order). A report returning bool stops the
   /// traversal by returning false; pairs_from then returns false (else true).
   template <class Report>
   bool pairs_from(const BoxTree& other, NodePair task, Report&& report) const {
@@ -132,7 +135,7 @@ class BoxTree {
       if (overlap(other.leaf_boxes_[l], nodes_[a])) cols[n_cols++] = l;
     for (int r = 0; r < n_rows; ++r) {
       const int k = rows[r];
-      const Box& box = leaf_boxes_[k];
+      const FloatBox& box = leaf_boxes_[k];
       const int i = order_[k];
       for (int c = 0; c < n_cols; ++c) {
         const int l = cols[c];
@@ -177,8 +180,8 @@ class BoxTree {
   void fit_nodes(unsigned threads);
 
   std::vector<int> order_;       ///< primitive indices in leaf order
-  std::vector<Box> leaf_boxes_;  ///< the primitives' boxes in leaf order
-  std::vector<Box> nodes_;       ///< node boxes, index 1..2 * first_leaf_ - 1 (0 unused)
+  std::vector<FloatBox> leaf_boxes_;  ///< the primitives' boxes in leaf order (float_box)
+  std::vector<FloatBox> nodes_;       ///< node boxes, index 1..2 * first_leaf_ - 1 (0 unused)
   int first_leaf_ = 1;           ///< the index of the first leaf node (a power of two)
 };
 

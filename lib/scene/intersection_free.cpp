@@ -89,7 +89,7 @@ bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std
 
 // The pairs of triangles whose boxes overlap come from a bounding volume hierarchy over the
 // triangles' boxes traversed against itself (scene/box_tree.hpp: every overlapping pair once,
-// exact min/max boxes and <= tests), in pieces handed out to the threads, and are decided as
+// among a few more whose outward-rounded float boxes overlap, dropped by the exact test), in pieces handed out to the threads, and are decided as
 // they are found: nothing is listed, and the first intersecting pair stops every thread.
 bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
                        unsigned threads) {
@@ -115,17 +115,17 @@ bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std
     return shared == 1 && (meets(opposite(triangles[i], corner_i), hulls[j]) ||
                            meets(opposite(triangles[j], corner_j), hulls[i]));
   };
+  const auto box_of = [&](std::size_t t) { return scene::swept_box(positions, positions, triangles[t].data(), 3); };
   scene::BoxTree tree;
-  tree.build(
-      triangles.size(), [&](std::size_t t) { return scene::swept_box(positions, positions, triangles[t].data(), 3); },
-      threads);
+  tree.build(triangles.size(), box_of, threads);
   std::atomic<bool> found{false};
   const auto tasks = tree.pair_tasks(tree, threads > 1 ? 32 * std::size_t{threads} : 1);
   scene::parallel_chunks(tasks.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t k = begin; k < end && !found.load(std::memory_order_relaxed); ++k)
       tree.pairs_from(tree, tasks[k], [&](int i, int j) {
         if (found.load(std::memory_order_relaxed)) return false;
-        if (meet(i, j)) found = true;
+        if (scene::overlap(box_of(static_cast<std::size_t>(i)), box_of(static_cast<std::size_t>(j))) && meet(i, j))
+          found = true;
         return !found.load(std::memory_order_relaxed);
       });
     return !found.load(std::memory_order_relaxed);
