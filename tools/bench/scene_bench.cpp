@@ -25,6 +25,12 @@
 // streamed broad phase, and the narrow phase over its listed candidates (filtered, naive), on 1
 // and 2 threads.
 #include <benchmark/benchmark.h>
+#ifdef EXACTCCD_BENCH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
 
 #include <sys/resource.h>
 
@@ -34,6 +40,7 @@
 #include <string>
 
 #include "exactccd/exactccd.hpp"
+#include "filter/fp_environment.hpp"
 #include "io/mesh_file.hpp"
 #include "scene/parallel.hpp"
 #include "scene/pair_stream.hpp"
@@ -443,6 +450,59 @@ void BM_FramesBroadStream(benchmark::State& state) {
   frames_label(state);
 }
 
+#ifdef EXACTCCD_BENCH_TBB
+// The project's pool (parallel.hpp: std::threads started per call, chunks handed out from one
+// atomic counter) against oneTBB's work stealing on the same two loops, for docs/scene.md's
+// choice: the narrow phase over the listed candidates (uneven costs) and the streamed broad
+// phase's pieces (tree pair tasks, counted).
+
+/// BM_FramesNarrow<filtered> with tbb::parallel_for (auto partitioner) in a task arena of
+/// state.range(0) threads.
+void BM_FramesNarrowTbb(benchmark::State& state) {
+  const FramesFixture& f = frames();
+  const int threads = static_cast<int>(state.range(0));
+  const auto& vf = f.prim.candidates.vertex_face;
+  const auto& ee = f.prim.candidates.edge_edge;
+  tbb::task_arena arena(threads);
+  tbb::enumerable_thread_specific<std::size_t> hits(0);
+  for (auto _ : state)
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vf.size() + ee.size()), [&](const auto& range) {
+        const filter::DefaultFpEnvironment fp_environment;
+        std::size_t& h = hits.local();
+        for (std::size_t k = range.begin(); k < range.end(); ++k) {
+          if (k < vf.size())
+            h += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), Method::filtered).has_value();
+          else
+            h += toi(scene::edge_edge_query(f.scene, f.prim.edges[ee[k - vf.size()][0]], f.prim.edges[ee[k - vf.size()][1]]),
+                     Method::filtered)
+                     .has_value();
+        }
+      });
+    });
+  frames_label(state);
+}
+
+/// BM_FramesBroadStream's loop with tbb::parallel_for over the same pieces (grain 1).
+void BM_FramesBroadStreamTbb(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  tbb::task_arena arena(threads);
+  tbb::enumerable_thread_specific<std::size_t> seen(0);
+  for (auto _ : state) {
+    const scene::SceneTrees trees(frames().scene, CcdParams{}, static_cast<unsigned>(threads));
+    const auto tasks = trees.trees().pair_tasks(static_cast<unsigned>(threads));
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1), [&](const auto& range) {
+        std::size_t& n = seen.local();
+        for (std::size_t k = range.begin(); k < range.end(); ++k)
+          trees.trees().visit(tasks[k], [&](const scene::FoundPair&) { return ++n > 0; });
+      });
+    });
+  }
+  frames_label(state);
+}
+#endif
+
 /// --frames=T0,T1: registers the BM_Frames* benchmarks on that step (1 and 2 threads).
 void register_frames(const std::string& spec) {
   const std::size_t comma = spec.find(',');
@@ -460,6 +520,12 @@ void register_frames(const std::string& spec) {
       ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
   benchmark::RegisterBenchmark("BM_FramesNarrow/naive", BM_FramesNarrow<tools::Method>, tools::Method::naive)
       ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+#ifdef EXACTCCD_BENCH_TBB
+  benchmark::RegisterBenchmark("BM_FramesNarrowTbb/filtered", BM_FramesNarrowTbb)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+  benchmark::RegisterBenchmark("BM_FramesBroadStreamTbb", BM_FramesBroadStreamTbb)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+#endif
 }
 
 int main(int argc, char** argv) {
