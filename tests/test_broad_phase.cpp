@@ -142,13 +142,15 @@ TEST(BroadPhase, ProceduralScenesMatchSweep) {
   EXPECT_GT(seen, 10000u);
 }
 
-// The trees keep float boxes rounded outwards (float_box.hpp): boxes closer than a float's
-// resolution (gaps of 2^-40 relative, at magnitudes from 2^-60 to 2^60), exactly touching, and
-// overlapping by as little must give exactly brute force's candidates on the double boxes.
+// The trees keep float boxes rounded outwards (float_box.hpp): boxes a few double ulps apart
+// (far below a float's resolution), exactly touching, and overlapping by as little, at
+// magnitudes from 2^-60 to 2^60, must give exactly brute force's candidates on the doubles.
 TEST(BroadPhase, BelowFloatResolutionMatchesBruteForce) {
   std::mt19937_64 rng(2323);
   std::uniform_int_distribution<int> gap(-2, 2), axis(0, 2);
-  for (const double scale : {0x1p-60, 1.0, 3.0, 0x1p60}) {
+  // Scales of 1.1 and 3.3 times powers of two: the coordinates are doubles that no float
+  // represents, so every bound of the trees is rounded.
+  for (const double scale : {0x1p-60 * 1.1, 1.1, 3.3, 0x1p60 * 1.1}) {
     Scene s;
     for (int k = 0; k < 60; ++k) {
       // Edge pairs along a line: edge k ends where edge k + 1 starts, plus a few ulps of the

@@ -1,7 +1,9 @@
 // Boxes of floats rounded outwards, for the trees of the broad phase (box_tree.hpp): half the
 // memory of the double boxes and twice the boxes per cache line. Every float box holds the
 // double box it was made from, so float boxes that do not overlap prove that the double boxes
-// do not; pairs whose float boxes overlap are then tested on the exact double boxes.
+// do not; pairs whose float boxes overlap are then tested on the exact double boxes. (Rounding
+// every bound to nearest would keep overlaps too, rounding being monotone, as long as every
+// conversion used the same rounding mode; the outward rounding needs no such assumption.)
 #pragma once
 
 #include <array>
