@@ -1,13 +1,10 @@
-// The narrow phase over a range of candidate pairs, shared by the scene functions
-// (scene_ccd.cpp: the candidates of the scene's broad phase) and the batch functions over the
-// caller's own candidates (candidates_ccd.cpp, exactccd/candidates.hpp): every pair decided by
-// the exact primitive queries of exactccd/ccd.hpp with CcdParams{min_distance, tmax}, on
-// several threads (parallel.hpp), with the early exit and the time pruning of earliest_toi.
-//
-// A range of candidates is any type with
-//   std::size_t size() const;           // the number of candidates
-//   PairSides pair(std::size_t k) const; // candidate k: its kind and its two sides of vertices
-// whose candidates are in the order of the results (colliding_pairs returns them by k).
+// The narrow phase, shared by the scene functions (streamed_step.cpp: the pairs of the scene's
+// broad phase as they are found) and the batch functions over the caller's own candidates
+// (candidates_ccd.cpp, exactccd/candidates.hpp): every pair decided by the exact primitive
+// queries of exactccd/ccd.hpp with CcdParams{min_distance, tmax}, as one of three questions
+// (CollectCollisions, EarliestCollision with its shrinking time window, AnyCollision) that take
+// the pairs one at a time on any worker; decide_checked_range hands a caller's list over on
+// several threads (parallel.hpp).
 #pragma once
 
 #include <algorithm>
@@ -288,17 +285,6 @@ class AnyCollision {
   bool boxes_checked_;
 };
 
-/// Hands every candidate k of the range to the question, question(range.pair(k), k, worker), on
-/// `threads` threads in chunks of kNarrowPhaseChunk, until it returns false.
-template <class Range, class Question>
-void decide_range(const Range& range, unsigned threads, Question& question) {
-  parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
-    for (std::size_t k = begin; k < end; ++k)
-      if (!question(range.pair(k), k, w)) return false;
-    return true;
-  });
-}
-
 /// What reading one candidate of a checked range gives.
 enum class CandidateRead {
   invalid,   ///< the candidate is malformed (stop: the caller reports it)
@@ -306,9 +292,10 @@ enum class CandidateRead {
   pair,      ///< its two sides, to decide
 };
 
-/// decide_range for a range whose candidates are checked as they are read: a range with
-/// CandidateRead read(k, PairSides& r) instead of pair(k), which also does the box test (so the
-/// question is asked with boxes_checked). An invalid candidate stops the loop. Returns true
+/// Hands every candidate k of a range to the question, question(r, k, worker), on `threads`
+/// threads in chunks of kNarrowPhaseChunk, until it returns false. The range has size() and
+/// CandidateRead read(k, PairSides& r), which checks candidate k as it is read and does the box
+/// test (so the question is asked with boxes_checked). An invalid candidate stops the loop. Returns true
 /// when every candidate was read and valid, false when the loop stopped early (a question's
 /// early exit or an invalid candidate: the caller then validates the whole range, so that bad
 /// input is reported, never answered).
@@ -328,38 +315,6 @@ bool decide_checked_range(const Range& range, unsigned threads, Question& questi
     return true;
   });
   return !stopped.load();
-}
-
-/// Every colliding candidate of the range with its time of impact, as {k, toi}, ascending in k,
-/// on `threads` threads (the result does not depend on their number).
-template <class Point, class Range>
-std::vector<std::pair<std::size_t, TimeInterval>> colliding_pairs(const Range& range, const PairTests<Point>& tests,
-                                                                  unsigned threads, bool boxes_checked = false) {
-  CollectCollisions<Point, std::size_t> question(tests, threads, boxes_checked);
-  decide_range(range, threads, question);
-  auto all = question.take();
-  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  return all;
-}
-
-/// The earliest time of impact over the range's candidates, or std::nullopt when none
-/// collides (EarliestCollision); the result does not depend on the number of threads.
-template <class Point, class Range>
-std::optional<TimeInterval> earliest_pair_toi(const Range& range, const PairTests<Point>& tests, unsigned threads,
-                                              bool boxes_checked = false) {
-  EarliestCollision<Point> question(tests, threads, boxes_checked);
-  decide_range(range, threads, question);
-  return question.result();
-}
-
-/// Whether some candidate of the range collides; on `threads` threads, stopping at the first
-/// collision found.
-template <class Point, class Range>
-bool any_pair_collides(const Range& range, const PairTests<Point>& tests, unsigned threads,
-                       bool boxes_checked = false) {
-  AnyCollision<Point> question(tests, boxes_checked);
-  decide_range(range, threads, question);
-  return question.hit();
 }
 
 }  // namespace exactccd::scene
