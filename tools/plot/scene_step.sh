@@ -15,7 +15,7 @@ out=docs/figures
 mkdir -p "$out"
 load=$(uptime)
 echo "== load before: $load"
-build/scene_bench --benchmark_filter='BM_Step' --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+build/scene_bench --benchmark_filter='BM_Step|BM_LineSearch' --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
   --benchmark_out="$out/scene_step.json" --benchmark_out_format=json
 : > "$out/scene_step_memory.json.tmp"
 for r in 16 64 220 708; do build/scene_bench --peak_memory="$r" >> "$out/scene_step_memory.json.tmp"; done
