@@ -115,8 +115,16 @@ double peak_rss_mib() {
 /// What --stats prints.
 struct StatsLine {
   scene::StepStats step;
-  double read_seconds, free0_seconds, free1_seconds, total_seconds, peak_mib;
+  double read_seconds = 0, free0_seconds = 0, free1_seconds = 0, total_seconds = 0, peak_mib = 0;
 };
+
+/// intersection_free of the scene's triangles at these positions; its wall time in `seconds`.
+bool timed_intersection_free(const std::vector<Vec3>& positions, const Scene& s, unsigned threads, double& seconds) {
+  const auto start = Clock::now();
+  const bool free = intersection_free(positions, s.triangles, threads);
+  seconds = seconds_since(start);
+  return free;
+}
 
 std::string fixed(double x, int digits) {
   char buf[64];
@@ -156,6 +164,66 @@ std::string stats_json(const StatsLine& s) {
   return out.str();
 }
 
+/// What one `exactccd scene` run found, and its --stats.
+struct SceneRun {
+  std::vector<Collision> collisions;
+  std::optional<TimeInterval> earliest;
+  double step = 0;
+  bool free0 = false, free1 = false;
+  StatsLine stats;
+};
+
+/// The broad-phase candidates the output counts: vertex-face and edge-edge (as streamed).
+std::size_t candidates_of(const SceneRun& run) { return run.stats.step.candidates[0] + run.stats.step.candidates[1]; }
+
+std::string json_report(const Scene& s, const SceneRun& run, bool with_stats) {
+  std::string vf_list, ee_list;
+  for (const Collision& c : run.collisions) {
+    if (c.kind == CollisionKind::vertex_face)
+      vf_list += (vf_list.empty() ? "[" : ", [") + std::to_string(c.vertex) + ", " + std::to_string(c.triangle) + "]";
+    else
+      ee_list += (ee_list.empty() ? "[" : ", [") + std::to_string(c.edge_a[0]) + ", " + std::to_string(c.edge_a[1]) +
+                 ", " + std::to_string(c.edge_b[0]) + ", " + std::to_string(c.edge_b[1]) + "]";
+  }
+  const auto boolean = [](bool b) { return b ? "true" : "false"; };
+  std::ostringstream out;
+  out << "{\"vertices\": " << s.positions_t0.size() << ", \"triangles\": " << s.triangles.size()
+      << ", \"candidates\": " << candidates_of(run) << ",\n \"vf_pairs\": [" << vf_list << "],\n \"ee_pairs\": ["
+      << ee_list << "],\n \"earliest_toi\": " << (run.earliest ? interval(*run.earliest) : "null")
+      << ", \"max_safe_step\": " << number(run.step) << ",\n \"end_intersection_free\": "
+      << boolean(run.free0 && run.free1) << ", \"t0_intersection_free\": " << boolean(run.free0)
+      << ", \"t1_intersection_free\": " << boolean(run.free1);
+  if (with_stats) out << ",\n \"stats\": " << stats_json(run.stats);
+  out << "}\n";
+  return out.str();
+}
+
+std::string text_report(const Scene& s, const SceneRun& run, bool with_stats) {
+  std::size_t vf = 0;
+  for (const Collision& c : run.collisions) vf += c.kind == CollisionKind::vertex_face;
+  const auto yes = [](bool b) { return b ? "yes" : "no"; };
+  std::ostringstream out;
+  out << "vertices                  " << s.positions_t0.size() << "\n"
+      << "triangles                 " << s.triangles.size() << "\n"
+      << "candidates                " << candidates_of(run) << " (" << run.stats.step.candidates[0] << " vf, "
+      << run.stats.step.candidates[1] << " ee)\n"
+      << "colliding vf pairs        " << vf << "\n"
+      << "colliding ee pairs        " << run.collisions.size() - vf << "\n"
+      << "earliest toi              " << (run.earliest ? interval(*run.earliest) : "none") << "\n"
+      << "max safe step             " << number(run.step) << "\n"
+      << "intersection-free at t0   " << yes(run.free0) << "\n"
+      << "intersection-free at t1   " << yes(run.free1) << "\n";
+  if (with_stats) out << stats_text(run.stats);
+  for (const Collision& c : run.collisions) {
+    if (c.kind == CollisionKind::vertex_face)
+      out << "vf " << c.vertex << " " << c.triangle;
+    else
+      out << "ee " << c.edge_a[0] << " " << c.edge_a[1] << " " << c.edge_b[0] << " " << c.edge_b[1];
+    out << " toi " << interval(c.toi) << "\n";
+  }
+  return out.str();
+}
+
 }  // namespace
 
 int run_scene(int argc, char** argv) {
@@ -182,61 +250,18 @@ int run_scene(int argc, char** argv) {
     throw UsageError(std::string("scene: ") + e.what());
   }
   // One streamed pass (scene/streamed_step.hpp): the candidates are counted, not stored.
-  scene::StepStats stats;
-  const std::vector<Collision> collisions = scene::find_collisions(s, scene_options, &stats);
-  const std::size_t candidates = stats.candidates[0] + stats.candidates[1];
-  const std::optional<TimeInterval> earliest = earliest_toi(collisions);
-  const double step = max_collision_free_step(earliest, params.tmax);
-  auto checked = Clock::now();
-  const bool free0 = intersection_free(s.positions_t0, s.triangles, scene_options.threads);
-  const double free0_seconds = seconds_since(checked);
-  checked = Clock::now();
-  const bool free1 = intersection_free(s.positions_t1, s.triangles, scene_options.threads);
-  const double free1_seconds = seconds_since(checked);
-  const double total_seconds = seconds_since(start);
-  const StatsLine stats_lines{stats, read_seconds, free0_seconds, free1_seconds, total_seconds, peak_rss_mib()};
-  std::size_t vf = 0;
-  for (const Collision& c : collisions) vf += c.kind == CollisionKind::vertex_face;
-  std::ostringstream out;
-  if (json) {
-    std::string vf_list, ee_list;
-    for (const Collision& c : collisions) {
-      if (c.kind == CollisionKind::vertex_face)
-        vf_list += (vf_list.empty() ? "[" : ", [") + std::to_string(c.vertex) + ", " + std::to_string(c.triangle) + "]";
-      else
-        ee_list += (ee_list.empty() ? "[" : ", [") + std::to_string(c.edge_a[0]) + ", " + std::to_string(c.edge_a[1]) +
-                   ", " + std::to_string(c.edge_b[0]) + ", " + std::to_string(c.edge_b[1]) + "]";
-    }
-    const auto boolean = [](bool b) { return b ? "true" : "false"; };
-    out << "{\"vertices\": " << s.positions_t0.size() << ", \"triangles\": " << s.triangles.size()
-        << ", \"candidates\": " << candidates << ",\n \"vf_pairs\": [" << vf_list << "],\n \"ee_pairs\": ["
-        << ee_list << "],\n \"earliest_toi\": " << (earliest ? interval(*earliest) : "null")
-        << ", \"max_safe_step\": " << number(step) << ",\n \"end_intersection_free\": " << boolean(free0 && free1)
-        << ", \"t0_intersection_free\": " << boolean(free0) << ", \"t1_intersection_free\": " << boolean(free1);
-    if (options.flag("--stats")) out << ",\n \"stats\": " << stats_json(stats_lines);
-    out << "}\n";
-  } else {
-    const auto yes = [](bool b) { return b ? "yes" : "no"; };
-    out << "vertices                  " << s.positions_t0.size() << "\n"
-        << "triangles                 " << s.triangles.size() << "\n"
-        << "candidates                " << candidates << " (" << stats.candidates[0] << " vf, " << stats.candidates[1]
-        << " ee)\n"
-        << "colliding vf pairs        " << vf << "\n"
-        << "colliding ee pairs        " << collisions.size() - vf << "\n"
-        << "earliest toi              " << (earliest ? interval(*earliest) : "none") << "\n"
-        << "max safe step             " << number(step) << "\n"
-        << "intersection-free at t0   " << yes(free0) << "\n"
-        << "intersection-free at t1   " << yes(free1) << "\n";
-    if (options.flag("--stats")) out << stats_text(stats_lines);
-    for (const Collision& c : collisions) {
-      if (c.kind == CollisionKind::vertex_face)
-        out << "vf " << c.vertex << " " << c.triangle;
-      else
-        out << "ee " << c.edge_a[0] << " " << c.edge_a[1] << " " << c.edge_b[0] << " " << c.edge_b[1];
-      out << " toi " << interval(c.toi) << "\n";
-    }
-  }
-  std::cout << out.str();
+  SceneRun run;
+  run.collisions = scene::find_collisions(s, scene_options, &run.stats.step);
+  run.earliest = earliest_toi(run.collisions);
+  run.step = max_collision_free_step(run.earliest, params.tmax);
+  run.free0 = timed_intersection_free(s.positions_t0, s, scene_options.threads, run.stats.free0_seconds);
+  run.free1 = timed_intersection_free(s.positions_t1, s, scene_options.threads, run.stats.free1_seconds);
+  run.stats.read_seconds = read_seconds;
+  run.stats.total_seconds = seconds_since(start);
+  run.stats.peak_mib = peak_rss_mib();
+  const bool stats = options.flag("--stats");
+  const std::string out = json ? json_report(s, run, stats) : text_report(s, run, stats);
+  std::cout << out;
   return kExitOk;
 }
 
