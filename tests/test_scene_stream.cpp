@@ -243,5 +243,32 @@ TEST(SceneStream, CandidatesWithDisjointBoxesChangeNothing) {
     }
 }
 
+// Bad rows are refused also when their boxes are disjoint (the box test comes before the check
+// of shared indices, and a degenerate side far from the other one): no answer is given.
+TEST(SceneStream, BadRowsRefusedWhateverTheirBoxes) {
+  Scene s;
+  add_crossing_edges(s, 4, 0.0);  // vertices 4k .. 4k + 3 near x = 4k
+  const auto& x0 = s.positions_t0;
+  const auto& x1 = s.positions_t1;
+  for (unsigned threads : {1u, 2u}) {
+    const SceneOptions options{threads};
+    CandidateSet degenerate_far;  // triangle (0, 0, 1) far from vertex 12: disjoint boxes
+    degenerate_far.vertex_face = {{12, 0, 0, 1}};
+    EXPECT_THROW(find_collisions(x0, x1, degenerate_far, options), std::invalid_argument);
+    EXPECT_THROW(earliest_toi(x0, x1, degenerate_far, options), std::invalid_argument);
+    EXPECT_THROW(is_collision_free(x0, x1, degenerate_far, options), std::invalid_argument);
+    CandidateSet degenerate_edge;  // edge (4, 4) far from edge (12, 13)
+    degenerate_edge.edge_edge = {{0, 1, 2, 3}, {4, 4, 12, 13}};
+    EXPECT_THROW(find_collisions(x0, x1, degenerate_edge, options), std::invalid_argument);
+    CandidateSet shared;  // edges (0, 1) and (1, 2): share vertex 1
+    shared.edge_edge = {{8, 9, 12, 13}, {0, 1, 1, 2}};
+    EXPECT_THROW(find_collisions(x0, x1, shared, options), std::invalid_argument);
+    EXPECT_THROW(max_collision_free_step(x0, x1, shared, options), std::invalid_argument);
+    CandidateSet out_of_range;
+    out_of_range.point_point = {{0, 99}};
+    EXPECT_THROW(find_collisions(x0, x1, out_of_range, options), std::invalid_argument);
+  }
+}
+
 }  // namespace
 }  // namespace exactccd

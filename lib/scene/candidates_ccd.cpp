@@ -70,15 +70,24 @@ void require_valid_rows(const std::vector<std::array<int, N>>& rows, std::size_t
   }
 }
 
-/// Whether a row is a valid candidate over n vertices: every index in [0, n) and no two equal
-/// (neither within a side, a degenerate element, nor across the sides, a shared vertex).
-template <std::size_t N>
-bool valid_row(const std::array<int, N>& row, std::size_t n) {
+/// Whether a row's indices are in [0, n) and each side's (its first F indices, the others)
+/// distinct: no degenerate element.
+template <std::size_t F, std::size_t N>
+bool valid_sides(const std::array<int, N>& row, std::size_t n) {
   bool ok = true;
   for (std::size_t i = 0; i < N; ++i) {
     ok &= row[i] >= 0 && static_cast<std::size_t>(row[i]) < n;
-    for (std::size_t j = 0; j < i; ++j) ok &= row[i] != row[j];
+    for (std::size_t j = i < F ? 0 : F; j < i; ++j) ok &= row[i] != row[j];
   }
+  return ok;
+}
+
+/// Whether the two sides of a row (its first F indices, the others) share no index.
+template <std::size_t F, std::size_t N>
+bool disjoint_sides(const std::array<int, N>& row) {
+  bool ok = true;
+  for (std::size_t i = F; i < N; ++i)
+    for (std::size_t j = 0; j < F; ++j) ok &= row[i] != row[j];
   return ok;
 }
 
@@ -90,6 +99,17 @@ bool valid_row(const std::array<int, N>& row, std::size_t n) {
 template <std::size_t F, std::size_t N>
 bool disjoint_boxes(const std::array<int, N>& row, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
                     const CcdParams& params) {
+  if (params.tmax == 1 && !(params.min_distance > 0)) {  // the contact question: min and max only
+    const auto side_box = [&](std::size_t begin, std::size_t end) {
+      const Vec3 &a = x0[static_cast<std::size_t>(row[begin])], &b = x1[static_cast<std::size_t>(row[begin])];
+      scene::Box box{{{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}},
+                     {{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}}};
+      for (std::size_t i = begin + 1; i < end; ++i)
+        scene::add_vertex(box, x0[static_cast<std::size_t>(row[i])], x1[static_cast<std::size_t>(row[i])]);
+      return box;
+    };
+    return !scene::overlap(side_box(0, F), side_box(F, N));
+  }
   scene::Box box[2];
   for (std::size_t s = 0; s < 2; ++s) box[s] = scene::empty_box();
   for (std::size_t i = 0; i < N; ++i) {
@@ -105,8 +125,8 @@ bool disjoint_boxes(const std::array<int, N>& row, const std::vector<Vec3>& x0, 
 }
 
 /// A CandidateSet as one range of the shared narrow phase, the kinds' lists one after the other
-/// in CollisionKind order, each candidate checked as it is read (read(): valid_row, then the
-/// box test) against the positions.
+/// in CollisionKind order, each candidate checked as it is read (read(): indices and sides,
+/// the box test, shared indices) against the positions.
 struct CandidateSetRange {
   const CandidateSet& set;
   const std::vector<Vec3>& x0;
@@ -132,7 +152,8 @@ struct CandidateSetRange {
     return i;
   }
 
-  /// Reads candidate k: invalid (valid_row), disjoint boxes, or its two sides in r.
+  /// Reads candidate k: invalid (an index out of range, a degenerate side, sides sharing an
+  /// index), disjoint boxes, or its two sides in r.
   scene::CandidateRead read(std::size_t k, PairSides& r) const {
     const std::size_t i = list_of(k), j = k - offsets[i];
     switch (i) {
@@ -146,8 +167,11 @@ struct CandidateSetRange {
 
   template <std::size_t F, std::size_t N>
   scene::CandidateRead read_row(const std::array<int, N>& row, std::size_t list, PairSides& r) const {
-    if (!valid_row(row, x0.size())) return scene::CandidateRead::invalid;
+    if (!valid_sides<F>(row, x0.size())) return scene::CandidateRead::invalid;
+    // Sides sharing a vertex always have overlapping boxes (both hold its position at t = 0),
+    // so a row found disjoint shares none: the check of shared indices can wait until here.
     if (disjoint_boxes<F>(row, x0, x1, params)) return scene::CandidateRead::disjoint;
+    if (!disjoint_sides<F>(row)) return scene::CandidateRead::invalid;
     r = sides_of(kKinds[list], row, static_cast<int>(F));
     return scene::CandidateRead::pair;
   }
