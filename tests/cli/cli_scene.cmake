@@ -97,6 +97,28 @@ if(CASE STREQUAL "scene_output")
     message(FATAL_ERROR "collision-free: earliest_toi is ${type}, expected null\n${out}")
   endif()
   expect_json("${out}" 1 max_safe_step)
+  # --stats (issue 23): the candidates per kind as streamed (3 vf and 3 ee, as listed above),
+  # the phases' times and the peak memory, in the text and as a JSON member; the rest unchanged.
+  run(scene ${WORK}/T0.obj ${WORK}/T1.obj --json --stats)
+  expect_json("${out}" 3 stats candidates vf)
+  expect_json("${out}" 3 stats candidates ee)
+  expect_json("${out}" 0 stats candidates pe)
+  expect_json("${out}" 6 candidates)
+  expect_json("${out}" 0.5 earliest_toi 0)
+  foreach(member read_s setup_s stream_s traversal_cpu_s narrow_cpu_s intersection_free_t0_s total_s peak_rss_mib)
+    string(JSON type TYPE "${out}" stats ${member})
+    if(NOT type STREQUAL "NUMBER")
+      message(FATAL_ERROR "scene --json --stats: stats.${member} is a ${type}\n${out}")
+    endif()
+  endforeach()
+  run(scene ${WORK}/T0.obj ${WORK}/T1.obj --stats --threads 2)
+  foreach(line "candidates +6 \\(3 vf, 3 ee\\)\n" "time set-up +[0-9.]+ s" "time broad\\+narrow phase +[0-9.]+ s wall, [12] workers"
+          "time intersection-free +[0-9.]+ s at t0, [0-9.]+ s at t1\n" "candidates per kind +3 vf, 3 ee, 0 pe, 0 pp\n"
+          "peak memory +[0-9.]+ MiB" "\nvf 4 0 toi \\[0.5, 0.5\\]\n")
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "${line}")
+      message(FATAL_ERROR "scene --stats: exit ${rc}, no line '${line}' in\n${out}\n${err}")
+    endif()
+  endforeach()
 
 elseif(CASE STREQUAL "scene_errors")
   file(WRITE ${WORK}/short.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\n f 1 2 3\n")

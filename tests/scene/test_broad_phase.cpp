@@ -142,6 +142,38 @@ TEST(BroadPhase, ProceduralScenesMatchSweep) {
   EXPECT_GT(seen, 10000u);
 }
 
+// The trees keep float boxes rounded outwards (float_box.hpp): boxes a few double ulps apart
+// (far below a float's resolution), exactly touching, and overlapping by as little, at
+// magnitudes from 2^-60 to 2^60, must give exactly brute force's candidates on the doubles.
+TEST(BroadPhase, BelowFloatResolutionMatchesBruteForce) {
+  std::mt19937_64 rng(2323);
+  std::uniform_int_distribution<int> gap(-2, 2), axis(0, 2);
+  // Scales of 1.1 and 3.3 times powers of two: the coordinates are doubles that no float
+  // represents, so every bound of the trees is rounded.
+  for (const double scale : {0x1p-60 * 1.1, 1.1, 3.3, 0x1p60 * 1.1}) {
+    Scene s;
+    for (int k = 0; k < 60; ++k) {
+      // Edge pairs along a line: edge k ends where edge k + 1 starts, plus a few ulps of the
+      // double (not of the float) apart, touching or overlapping; on a random axis.
+      const int v = static_cast<int>(s.positions_t0.size());
+      const int a = axis(rng);
+      const double start = scale * (1 + 4 * k), end = scale * (3 + 4 * k);
+      double next = end;
+      for (int g = gap(rng); g != 0; g += g > 0 ? -1 : 1) next = std::nextafter(next, g > 0 ? 1e300 : -1e300);
+      const auto at = [&](double x) {
+        Vec3 p{scale * k, scale * 0.5, -scale * k};
+        (a == 0 ? p.x : a == 1 ? p.y : p.z) = x;
+        return p;
+      };
+      s.positions_t0.insert(s.positions_t0.end(), {at(start), at(end), at(next), at(next + scale)});
+      s.positions_t1.insert(s.positions_t1.end(), {at(start), at(end), at(next), at(next + scale)});
+      s.edges.push_back({v, v + 1});
+      s.edges.push_back({v + 2, v + 3});
+    }
+    check_scene(s, true, "scale " + std::to_string(scale));
+  }
+}
+
 TEST(BroadPhase, ProceduralSceneMatchesBruteForce) {
   const Scene s = scene_of(scene::procedural_scene("fold", 6, 2));
   EXPECT_GT(check_scene(s, true, "fold 6"), 100u);
@@ -302,10 +334,16 @@ TEST(BoxTreePairs, EveryOverlappingPairOnceWhateverTheTasks) {
       for (const std::size_t wanted : {1u, 5u, 64u, 100000u}) {
         const std::string what = std::to_string(na) + " x " + std::to_string(nb) + ", " + std::to_string(wanted);
         std::vector<std::array<int, 2>> self, cross;
+        // The trees report the pairs whose float boxes overlap (here, on the integer grid, exactly
+        // the overlapping ones); the exact test keeps the overlapping ones.
         for (const auto& task : ta.pair_tasks(ta, wanted))
-          ta.pairs_from(ta, task, [&](int i, int j) { self.push_back({i, j}); });
+          ta.pairs_from(ta, task, [&](int i, int j) {
+            if (overlapping(a[static_cast<std::size_t>(i)], a[static_cast<std::size_t>(j)])) self.push_back({i, j});
+          });
         for (const auto& task : ta.pair_tasks(tb, wanted))
-          ta.pairs_from(tb, task, [&](int i, int j) { cross.push_back({i, j}); });
+          ta.pairs_from(tb, task, [&](int i, int j) {
+            if (overlapping(a[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(j)])) cross.push_back({i, j});
+          });
         std::sort(self.begin(), self.end());  // duplicates kept: each pair must come once
         std::sort(cross.begin(), cross.end());
         EXPECT_EQ(self, want_self) << what;

@@ -135,5 +135,39 @@ TEST(IntersectionFree, AgreesWithVertexSweepQueries) {
   EXPECT_GT(shared_meeting, 50);
 }
 
+// The streamed, parallel search over the triangles' tree: at every thread count the answer of
+// a pairwise check of every two triangles (each pair decided alone by intersection_free of the
+// two): meshes of many small random triangles on a coarse grid (touching, coplanar, shared
+// vertices), some intersection-free and some not, and a pair that meets placed anywhere.
+TEST(IntersectionFree, EveryThreadCountAgreesWithPairwiseChecks) {
+  std::mt19937_64 rng(9);
+  std::uniform_int_distribution<int> coord(0, 40), step(-1, 1);
+  int free_meshes = 0, meeting_meshes = 0;
+  for (int m = 0; m < 40; ++m) {
+    std::vector<Vec3> p;
+    std::vector<Tri> tris;
+    const int n = 30 + 10 * (m % 5);
+    for (int t = 0; t < n; ++t) {
+      const Vec3 c{coord(rng) * 0.5, coord(rng) * 0.5, (m % 3 == 0 ? 0 : coord(rng)) * 0.5};
+      const int v = static_cast<int>(p.size());
+      p.push_back(c);
+      p.push_back({c.x + 0.5 * step(rng) + 0.5, c.y + 0.5 * step(rng), c.z + 0.5 * step(rng)});
+      p.push_back({c.x + 0.5 * step(rng), c.y + 0.5 * step(rng) + 0.5, c.z + 0.5 * step(rng)});
+      tris.push_back({v, v + 1, v + 2});
+      if (t % 7 == 3) tris.push_back({v, v + 2, static_cast<int>(coord(rng) % (v + 1))});  // shared vertices
+    }
+    for (auto it = tris.begin(); it != tris.end();)  // no repeated index
+      it = ((*it)[0] == (*it)[1] || (*it)[0] == (*it)[2] || (*it)[1] == (*it)[2]) ? tris.erase(it) : it + 1;
+    bool want = true;
+    for (std::size_t i = 0; i < tris.size() && want; ++i)
+      for (std::size_t j = i + 1; j < tris.size() && want; ++j) want = intersection_free(p, {tris[i], tris[j]});
+    (want ? free_meshes : meeting_meshes) += 1;
+    for (unsigned threads : {0u, 1u, 2u, 3u, 8u})
+      EXPECT_EQ(intersection_free(p, tris, threads), want) << "mesh " << m << " threads " << threads;
+  }
+  EXPECT_GT(free_meshes, 5);
+  EXPECT_GT(meeting_meshes, 5);
+}
+
 }  // namespace
 }  // namespace exactccd
