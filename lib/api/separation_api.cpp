@@ -13,6 +13,7 @@
 #include <string>
 #include <type_traits>
 
+#include "api/number_text.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/rational_query.hpp"
 #include "exactccd/ccd.hpp"
@@ -50,10 +51,10 @@ void validate(const Query& q, const CcdParams& p, Method method, bool want_toi) 
                                   ": non-finite coordinate (NaN or infinity) in the query");
   if (!(std::isfinite(p.min_distance) && p.min_distance >= 0))
     throw std::invalid_argument(function_name<Query>(want_toi) + ": min_distance must be finite and >= 0, not " +
-                                std::to_string(p.min_distance));
+                                shortest_text(p.min_distance));
   if (!(p.tmax > 0 && p.tmax <= 1))
     throw std::invalid_argument(function_name<Query>(want_toi) + ": tmax must be in (0, 1], not " +
-                                std::to_string(p.tmax));
+                                shortest_text(p.tmax));
   if (method != Method::filtered && method != Method::exact)
     throw std::invalid_argument(function_name<Query>(want_toi) + ": unknown method " +
                                 std::to_string(static_cast<int>(method)));

@@ -171,6 +171,7 @@ std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positio
                                                 const std::vector<Vec3>& positions_t1,
                                                 const CandidateSet& candidates, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
   const CandidateSetRange range(candidates);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
@@ -183,6 +184,7 @@ std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positio
 std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                                          const CandidateSet& candidates, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
   const CandidateSetRange range(candidates);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
@@ -197,6 +199,7 @@ std::optional<TimeInterval> earliest_toi(const std::vector<CandidateCollision>& 
 bool is_collision_free(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                        const CandidateSet& candidates, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
   const CandidateSetRange range(candidates);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);

@@ -36,7 +36,9 @@ struct SceneBroadPhase::State {
 SceneBroadPhase::SceneBroadPhase(const Scene& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   validate(options);
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel, here only
   state_ = std::make_unique<State>(scene, options);  // validates the scene
+  state_->options.cancel = nullptr;                  // the flag need not outlive this call
   state_->refresh();
 }
 

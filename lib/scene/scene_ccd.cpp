@@ -109,6 +109,7 @@ CcdParams params_of(const SceneOptions& options) {
 template <class SceneT>
 std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = params_of(options);
   const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
@@ -123,6 +124,7 @@ std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOption
 template <class SceneT>
 std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = params_of(options);
   const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
@@ -133,6 +135,7 @@ std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOpti
 template <class SceneT>
 bool is_collision_free_in(const SceneT& scene, const SceneOptions& options) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = params_of(options);
   const ScenePrimitives prim = scene::scene_primitives(scene, params, scene::resolve_threads(options.threads));
   const CandidateRange<SceneT> range(scene, prim);
