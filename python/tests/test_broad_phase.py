@@ -26,9 +26,8 @@ def test_line_search_equals_the_free_functions(scene, d, tmax):
     assert bp.min_distance == d and bp.tmax == tmax
     steps = 0
     for alpha in (1.0, 0.5, 0.25, 0.125):  # a backtracking line search: refit, never rebuild
-        Va = V0 + alpha * (V1 - V0)
-        if alpha != 1.0:
-            bp.update(Va)
+        Va = V0 + alpha * (V1 - V0)  # at alpha = 1 not always V1 in doubles: refit to it too
+        bp.update(Va)
         kw = dict(min_distance=d, tmax=tmax)
         same_collisions(bp.find_collisions(), exactccd.find_collisions(V0, Va, F, **kw))
         assert bp.earliest_toi() == exactccd.earliest_toi(V0, Va, F, **kw)

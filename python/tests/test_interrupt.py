@@ -22,8 +22,9 @@ what = sys.argv[1]
 rng = np.random.default_rng(3)
 
 def soup(n):
-    """n small random triangles moving in the unit cube: many candidate pairs."""
-    c = rng.random((n, 1, 3))
+    """n small random triangles moving in a cube of volume n / 20000: a fixed density, so that
+    the work grows linearly with n (the estimate from n / 20 holds)."""
+    c = rng.random((n, 1, 3)) * (n / 20000) ** (1 / 3)
     V0 = (c + rng.uniform(-0.02, 0.02, (n, 3, 3))).reshape(-1, 3)
     V1 = V0 + np.repeat(rng.uniform(-0.05, 0.05, (n, 3)), 3, axis=0)
     return V0, V1, np.arange(3 * n).reshape(-1, 3)
