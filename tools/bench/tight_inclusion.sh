@@ -29,7 +29,10 @@ sample=../shared/data/sample-queries/unit-tests
 if [ -d "$sample" ]; then sets=("shared unit-tests=$(files "$sample"/*/*.csv)" "${sets[@]}"); fi
 echo "commit $(git rev-parse --short HEAD), $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load at start: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "Tight Inclusion: $ti_source ($(git -C "$ti_source" rev-parse --short HEAD 2>/dev/null || echo '?')), $library"
-echo "repetitions: $repetitions (Tight Inclusion's log on stderr: build/tight_inclusion_bench.log)"
-build/tight_inclusion_bench "$repetitions" "${sets[@]}" 2> build/tight_inclusion_bench.log
-echo "Tight Inclusion log lines (its warnings and errors): $(wc -l < build/tight_inclusion_bench.log)"
+echo "repetitions: $repetitions (Tight Inclusion's log lines, which its logger writes to stdout: build/tight_inclusion_bench.log)"
+build/tight_inclusion_bench "$repetitions" "${sets[@]}" > build/tight_inclusion_bench.out
+grep -v '^\[' build/tight_inclusion_bench.out
+grep '^\[' build/tight_inclusion_bench.out > build/tight_inclusion_bench.log || true
+echo "Tight Inclusion log lines: $(wc -l < build/tight_inclusion_bench.log); the most frequent:"
+cut -d']' -f3- build/tight_inclusion_bench.log | sort | uniq -c | sort -rn | head -3
 echo "load at end: $(cut -d' ' -f1-3 /proc/loadavg), $(date -u '+%H:%M UTC')"
