@@ -917,6 +917,6 @@ PYBIND11_MODULE(_exactccd, m) {
         "The triangle mesh in the file at path, as (V, F): V a float64 array (n, 3) of positions (read "
         "exactly), F an int64 array (m, 3) of 0-based triangles (polygons fan-triangulated). The format "
         "comes from the extension and the content, which must agree (the formats the library reads; see "
-        "the README). Raises FileNotFoundError for a missing file and ValueError with the library's "
+        "docs/formats.md). Raises FileNotFoundError for a missing file and ValueError with the library's "
         "message (\"<path>:<line>: <reason>\") for an unreadable, unsupported or malformed file.");
 }
