@@ -111,7 +111,7 @@ TEST(SceneOptions, CancelledBeforeTheCallThrowsCancelled) {
 }
 
 TEST(SceneOptions, CancelledDuringALongCallStopsSoon) {
-  const Scene s = soup(20000);
+  const Scene s = soup(12000);
   SceneOptions o;
   o.threads = 2;
   const auto start = std::chrono::steady_clock::now();
