@@ -44,6 +44,7 @@ exactccd_status with_candidates(const double* x0, const double* x1, std::size_t 
   const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
   if (!(std::isfinite(d) && d >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
   if (n > static_cast<std::size_t>(INT_MAX)) return EXACTCCD_ERROR_PARAMETER;
+  if (threads > kMaxThreads) return EXACTCCD_ERROR_PARAMETER;  // the range of SceneOptions::threads
   for (std::size_t i = 0; i < 3 * n; ++i)
     if (!std::isfinite(x0[i]) || !std::isfinite(x1[i])) return EXACTCCD_ERROR_NON_FINITE;
   try {

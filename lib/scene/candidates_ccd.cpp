@@ -257,6 +257,7 @@ std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positio
                                                 const std::vector<Vec3>& positions_t1,
                                                 const CandidateSet& candidates, const SceneOptions& options) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
   scene::CollectCollisions<Vec3, std::size_t> question(tests, scene::resolve_threads(options.threads),
@@ -274,6 +275,7 @@ std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positio
 std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                                          const CandidateSet& candidates, const SceneOptions& options) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
   scene::EarliestCollision<Vec3> question(tests, scene::resolve_threads(options.threads), /*boxes_checked=*/true);
@@ -289,6 +291,7 @@ std::optional<TimeInterval> earliest_toi(const std::vector<CandidateCollision>& 
 bool is_collision_free(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                        const CandidateSet& candidates, const SceneOptions& options) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
   scene::AnyCollision<Vec3> question(tests, /*boxes_checked=*/true);

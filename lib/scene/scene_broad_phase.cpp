@@ -35,7 +35,9 @@ struct SceneBroadPhase::State {
 SceneBroadPhase::SceneBroadPhase(const Scene& scene, const SceneOptions& options) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   validate(options);
-  state_ = std::make_unique<State>(scene, options);
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel, here only
+  state_ = std::make_unique<State>(scene, options);  // validates the scene, builds the trees
+  state_->options.cancel = nullptr;                  // the flag need not outlive this call
 }
 
 SceneBroadPhase::~SceneBroadPhase() = default;

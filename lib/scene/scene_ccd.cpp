@@ -24,6 +24,7 @@ CcdParams params_of(const SceneOptions& options) {
 template <class SceneT>
 std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOptions& options) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
   const scene::SceneTrees trees(scene, params, threads);
@@ -33,6 +34,7 @@ std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOption
 template <class SceneT>
 std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOptions& options) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
   const scene::SceneTrees trees(scene, params, threads);
@@ -42,6 +44,7 @@ std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOpti
 template <class SceneT>
 bool is_collision_free_in(const SceneT& scene, const SceneOptions& options) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::CancelScope cancel_scope(options.cancel);  // SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
   const scene::SceneTrees trees(scene, params, threads);

@@ -29,13 +29,24 @@ of shape (n, 3); candidate rows of vertex indices, or of face / edge indices wit
     candidates_is_collision_free(...) -> bool
     candidates_max_collision_free_step(...) -> float
 
+A scene's broad phase kept across the calls of a line search (build once, refit per trial)::
+
+    bp = SceneBroadPhase(V0, V1, F, E=None, P=None, min_distance=0.0, tmax=1.0, threads=0)
+    bp.update(V1_trial); bp.max_collision_free_step()   # also find_collisions(), earliest_toi(),
+                                                       # is_collision_free(), candidates, edges
+
 Every answer is exact; a time of impact is the tightest double interval [lo, hi] holding the exact
-time. Bad input (shape, dtype, NaN or infinite coordinates, bad min_distance or tmax) raises
-ValueError with the library's message.
+time. Coordinates are float64 arrays, or float32/float16 (widened exactly), or integer arrays whose
+every value is a double. threads is in 0..1024 (0: every hardware thread). Bad input (shape,
+dtype, an integer that is not a double, NaN or infinite coordinates, bad min_distance, tmax or
+threads) raises ValueError with the library's message. Long calls can be interrupted with Ctrl-C
+(KeyboardInterrupt; the worker threads stop).
 """
 
 from ._exactccd import (  # noqa: F401
     EDGE_EDGE,
+    SceneBroadPhase,
+    __version__,
     KIND_NAMES,
     POINT_EDGE,
     POINT_POINT,
@@ -66,8 +77,6 @@ from ._exactccd import (  # noqa: F401
     vertex_face_toi,
 )
 
-__version__ = "@PROJECT_VERSION@"
-
 #: The batch functions' kinds: name -> (rows per query: every point at t = 0, then at t = 1; coordinates per row).
 KINDS = {
     "vertex_face": (8, 3),
@@ -80,7 +89,7 @@ KINDS = {
 }
 
 __all__ = [
-    "EDGE_EDGE", "KIND_NAMES", "KINDS", "POINT_EDGE", "POINT_POINT", "VERTEX_FACE",
+    "EDGE_EDGE", "KIND_NAMES", "KINDS", "POINT_EDGE", "POINT_POINT", "SceneBroadPhase", "VERTEX_FACE",
     "candidates_earliest_toi", "candidates_find_collisions", "candidates_is_collision_free",
     "candidates_max_collision_free_step", "earliest_toi", "find_collisions", "intersection_free", "is_collision_free",
     "max_collision_free_step", "read_mesh",

@@ -1,4 +1,4 @@
-# CLI contract tests of unreadable input, bounded resources and command-line numbers (README,
+# CLI contract tests of unreadable input, bounded resources and command-line numbers (docs/formats.md,
 # "Input files"), one CTest test per case (CMakeLists.txt):
 #   cmake -DEXE=<exactccd> -DDATA=<tests/data> -DPLUGIN=<naive_plugin.so> -DWORK=<scratch dir>
 #         -DCASE=<case> -P cli_input.cmake
