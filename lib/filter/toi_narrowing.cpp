@@ -30,15 +30,19 @@ double root_guess(const Query& q, const pipeline::VolumeRootCell& cell) {
 template <class IntegerQuery, class Query>
 std::optional<TimeInterval> narrow_toi_in_cell(const Query& q, const pipeline::VolumeRootCell& cell) {
   if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
-  // Signs: double-double first (certified, usually decisive), exact V in GMP on demand.
+  // Signs: double-double first (certified, usually decisive; the query scaled once for every
+  // t), exact V in GMP on demand. The double-double values steer the secant steps (an exact
+  // sign from GMP gives none: bisection then).
+  const VolumeSigns volume(q);
   std::optional<exact::IntegerPoly> v;
   const auto sign = [&](double t) {
-    if (const int s = certified_volume_sign(q, t); s != 0) return numeric::SignAt{s};
+    double approximation = 0;
+    if (const int s = volume.sign_at(t, &approximation); s != 0) return numeric::SignAt{s, approximation};
     if (!v) v = integer_poly(contact::polynomials(to_integer_query<IntegerQuery>(q)).volume());
     return numeric::SignAt{exact::sign_at(*v, t)};
   };
-  numeric::Bisection halving;
-  return numeric::tightest_enclosure(cell.lo, cell.hi, cell.sign_at_lo, root_guess(q, cell), sign, halving);
+  numeric::Secant secant;
+  return numeric::tightest_enclosure(cell.lo, cell.hi, cell.sign_at_lo, root_guess(q, cell), sign, secant);
 }
 
 }  // namespace

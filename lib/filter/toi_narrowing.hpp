@@ -3,7 +3,9 @@
 // root of V in a cell (pipeline::VolumeRootCell), a few bits short of adjacent doubles. A
 // long-double Newton guess picks a double; V's signs at it and at its neighbour, certified in
 // double-double arithmetic (volume_sign.hpp), exact in GMP only where those stay uncertain,
-// usually settle it (numeric/root_narrowing.hpp).
+// usually settle it; otherwise secant steps on the double-double values of V at the last two
+// doubles examined (numeric/root_narrowing.hpp) land next to the root within a step or two
+// (bisection before, with a guess far off, about 40 signs).
 #pragma once
 
 #include <optional>

@@ -9,9 +9,32 @@
 // and the caller decides exactly.
 #pragma once
 
+#include <array>
+
 #include "exactccd/types.hpp"
+#include "numeric/certified_sign.hpp"
 
 namespace exactccd::filter {
+
+/// V of one query at any number of doubles t: the query scaled once (ScaledRows), then each t
+/// evaluated in double-double.
+class VolumeSigns {
+ public:
+  /// V of a vertex-face query.
+  explicit VolumeSigns(const VertexFaceQuery& q);
+  /// V of an edge-edge query.
+  explicit VolumeSigns(const EdgeEdgeQuery& q);
+
+  /// The certified sign (-1 or +1) of V(t) for a double t in [0, 1], or 0 when double-double
+  /// precision cannot certify it (always when V(t) = 0). `approximation`, when given, receives
+  /// the double nearest the computed double-double value of V(t) times 2^(3 s) (s the scaling's
+  /// exponent, the same for every t of the query: ratios of approximations are meaningful).
+  int sign_at(double t, double* approximation = nullptr) const;
+
+ private:
+  numeric::ScaledRows<8> rows_;
+  std::array<int, 4> volume_rows_;  // V = det[u - base, v - base, w - base] for rows {base, u, v, w}
+};
 
 /// The certified sign (-1 or +1) of V(t) (V as in contact_polynomials.hpp) for a double t in
 /// [0, 1], or 0 when double-double precision cannot certify it (always when V(t) = 0).

@@ -51,18 +51,22 @@
 
 namespace exactccd::numeric {
 
-/// A query's points at one double time t, in double-double, scaled exactly as in the header.
-/// N rows: the P = N / 2 points at t0, then the same points at t1.
+/// A query's points scaled exactly as in the header (the power of two of its largest
+/// coordinate), and d^2 likewise: what every time t of one query shares (scaled once, then
+/// evaluated at any number of times by GeometryAt). N rows: the P = N / 2 points at t0, then the
+/// same points at t1.
 template <std::size_t N>
-class GeometryAt {
+class ScaledRows {
  public:
   using Approx = double_word::Approx;  ///< a double-double value with its error bound
 
-  /// The points of `x` (finite doubles) at t, and the length d >= 0.
-  GeometryAt(const std::array<Vec3, N>& x, double t, double d = 0) : t_(t) {
-    if (!(t >= 0 && t <= 1)) return;
+  /// The points of `x` (finite doubles) and the length d >= 0.
+  explicit ScaledRows(const std::array<Vec3, N>& x, double d = 0) {
+    // The largest magnitude by plain comparisons (an infinity makes it infinite and the rows
+    // unusable below; a NaN is skipped here and makes every value NaN, never certified).
     double largest = 0;
-    for (const Vec3& p : x) largest = std::fmax(largest, std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))));
+    for (const Vec3& p : x)
+      for (const double v : {p.x, p.y, p.z}) largest = std::fabs(v) > largest ? std::fabs(v) : largest;
     if (!(largest > 0 && largest < 0x1p1023) || !(d >= 0 && d < 0x1p1023)) return;  // all zero, or not finite
     // 2^s as two normal double factors (unit_scale), each applied exactly when scaling up: the
     // first product is below 2 (so normal or exact), the second likewise.
@@ -81,28 +85,51 @@ class GeometryAt {
     usable_ = true;
   }
 
-  /// False when nothing can be certified (t outside [0, 1], every coordinate zero, an inexact
-  /// scaling, d beyond the range of the header).
+  /// False when nothing can be certified (every coordinate zero, an inexact scaling, d beyond
+  /// the range of the header).
   bool usable() const { return usable_; }
+  /// The scaled rows.
+  const std::array<Vec3, N>& rows() const { return y_; }
+  /// d^2, scaled as the coordinates.
+  const Approx& d_squared() const { return d_squared_; }
+
+ private:
+  std::array<Vec3, N> y_{};
+  Approx d_squared_{{0.0, 0.0}, 0.0};
+  bool usable_ = false;
+};
+
+/// A query's points at one double time t, in double-double, from its scaled rows (ScaledRows,
+/// which must outlive this object).
+template <std::size_t N>
+class GeometryAt {
+ public:
+  using Approx = double_word::Approx;  ///< a double-double value with its error bound
+
+  /// The scaled points at t.
+  GeometryAt(const ScaledRows<N>& scaled, double t) : scaled_(scaled), t_(t) {}
+  GeometryAt(ScaledRows<N>&&, double) = delete;  ///< not from a temporary
+
+  /// False when nothing can be certified (t outside [0, 1], or the rows unusable).
+  bool usable() const { return t_ >= 0 && t_ <= 1 && scaled_.usable(); }
 
   /// The vector from point i to point j at t.
   Vec3T<Approx> vector(int i, int j) const {
     constexpr std::size_t P = N / 2;
-    const Vec3 &u0 = y_[static_cast<std::size_t>(i)], &u1 = y_[static_cast<std::size_t>(i) + P];
-    const Vec3 &v0 = y_[static_cast<std::size_t>(j)], &v1 = y_[static_cast<std::size_t>(j) + P];
+    const std::array<Vec3, N>& y = scaled_.rows();
+    const Vec3 &u0 = y[static_cast<std::size_t>(i)], &u1 = y[static_cast<std::size_t>(i) + P];
+    const Vec3 &v0 = y[static_cast<std::size_t>(j)], &v1 = y[static_cast<std::size_t>(j) + P];
     using double_word::difference_at;
     return {difference_at(u0.x, v0.x, u1.x, v1.x, t_), difference_at(u0.y, v0.y, u1.y, v1.y, t_),
             difference_at(u0.z, v0.z, u1.z, v1.z, t_)};
   }
 
   /// d^2, scaled as the coordinates.
-  const Approx& d_squared() const { return d_squared_; }
+  const Approx& d_squared() const { return scaled_.d_squared(); }
 
  private:
-  std::array<Vec3, N> y_;
+  const ScaledRows<N>& scaled_;
   double t_;
-  Approx d_squared_{{0.0, 0.0}, 0.0};
-  bool usable_ = false;
 };
 
 }  // namespace exactccd::numeric

@@ -10,7 +10,8 @@
 // consecutive doubles around it. The choices only decide the speed: first a guess of the root
 // (from a long-double evaluation: right to an ulp or so, two signs usually settle it: the
 // guess and its neighbour on the root's side), then the Chooser's doubles: halving
-// (Bisection), or regula falsi on approximate values of f (RegulaFalsi).
+// (Bisection), regula falsi on approximate values of f at the cell's ends (RegulaFalsi), or
+// secant steps through the last two doubles examined (Secant).
 #pragma once
 
 #include <cmath>
@@ -31,8 +32,9 @@ struct SignAt {
 struct Bisection {
   /// Before the first midpoint (nothing to prepare).
   void begin(double, double) {}
-  /// f was examined at an end of the cell that moved there (sign and approximation at it).
-  void moved(const SignAt&) {}
+  /// f was examined at the double t, an end of the cell that moved there (sign and
+  /// approximation at it).
+  void moved(double, const SignAt&) {}
   /// A step of the loop changed the cell from a width `width` to (lo, hi).
   void stepped(int, double, double, double) {}
   /// The next double to examine.
@@ -57,7 +59,7 @@ class RegulaFalsi {
     if (f_hi_ == 0) f_hi_ = approximate_(hi);
   }
   /// An end moved to a double where f's sign (nonzero) and approximation are known.
-  void moved(const SignAt& s) {
+  void moved(double, const SignAt& s) {
     const double f = s.sign * std::fmax(std::fabs(s.approximation), 0x1p-1000);
     (s.sign > 0 ? f_lo_ : f_hi_) = f;
   }
@@ -87,6 +89,45 @@ class RegulaFalsi {
   int side_ = 0, slow_ = 0;
 };
 
+/// Secant steps on approximate values of f through the last two doubles examined (the guess
+/// and its neighbour first: from an approximation accurate to many bits, as double-double
+/// gives, one step lands within an ulp or so of the root, and the next examines the neighbour
+/// on the root's side: the estimate falls on an end of the cell and is moved inside, next to
+/// it). Bisection while fewer than two approximations are known (an approximation of 0: not
+/// computed), when the last two are equal, and after three steps in a row that did not halve
+/// the cell, so that the cell shrinks at least geometrically.
+class Secant {
+ public:
+  /// Before the loop (nothing to prepare: the examined doubles give the approximations).
+  void begin(double, double) {}
+  /// f was examined at the double t (an end of the cell now): the last two examined are kept.
+  void moved(double t, const SignAt& s) {
+    t0_ = t1_;
+    f0_ = f1_;
+    t1_ = t;
+    f1_ = s.approximation;
+    known_ = s.approximation == 0 ? 0 : known_ + 1;
+  }
+  /// A step of the loop left the cell (lo, hi) of former width `width`: count slow steps.
+  void stepped(int, double width, double lo, double hi) { slow_ = (hi - lo) > width / 2 ? slow_ + 1 : 0; }
+  /// The next double to examine (inside the cell, or the caller moves it there).
+  double next(double lo, double hi) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    if (known_ < 2 || slow_ >= 3 || f0_ == f1_) {
+      slow_ = 0;
+      return lo + (hi - lo) / 2;
+    }
+    double m = t1_ - f1_ * ((t1_ - t0_) / (f1_ - f0_));
+    if (!(m > lo)) m = std::nextafter(lo, kInf);  // also a NaN estimate
+    if (!(m < hi)) m = std::nextafter(hi, -kInf);
+    return m;
+  }
+
+ private:
+  double t0_ = 0, f0_ = 0, t1_ = 0, f1_ = 0;  // the last two doubles examined, f's approximations there
+  int known_ = 0, slow_ = 0;                  // approximations known in a row; slow steps in a row
+};
+
 /// The tightest double interval around the only root t* of f in the open cell (lo, hi) (lo < hi
 /// doubles; f's sign at lo is sign_at_lo != 0, the opposite at hi). `sign(m)` returns SignAt:
 /// f's exact sign at a double m inside the cell (0: f(m) = 0) and an approximation; `guess` a
@@ -101,7 +142,7 @@ TimeInterval tightest_enclosure(double lo, double hi, int sign_at_lo, double gue
     s = at.sign;
     if (s == 0) return false;
     (s == sign_at_lo ? lo : hi) = m;
-    chooser.moved(at);
+    chooser.moved(m, at);
     return true;
   };
   int s = 0;

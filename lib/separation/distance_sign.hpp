@@ -30,7 +30,8 @@ template <std::size_t N>
 int certified_distance_sign(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double t,
                             double* approximation = nullptr) {
   using Approx = numeric::double_word::Approx;
-  const numeric::GeometryAt<N> at(x, t, d);
+  const numeric::ScaledRows<N> scaled(x, d);
+  const numeric::GeometryAt<N> at(scaled, t);
   if (!at.usable()) return 0;
   Approx value{{0.0, 0.0}, 0.0};
   feature_condition(f, [&](int i, int j) { return at.vector(i, j); }, at.d_squared(),
