@@ -14,8 +14,10 @@ struct StageCounters {
   std::uint64_t fixed_integer = 0;     ///< exact integer arithmetic in fixed-width (1024-bit) integers
   std::uint64_t integer = 0;           ///< exact integer arithmetic in GMP, small degree-4 kernel
   std::uint64_t exact = 0;             ///< exact fallback (GMP rationals, CGAL algebraic kernel)
-  std::uint64_t separating_direction = 0;  ///< minimum separation: a certified direction
-                                          ///< separates the swept primitives by more than d
+  std::uint64_t separating_direction = 0;  ///< a certified direction separates the primitives:
+                                          ///< minimum separation, the swept primitives by more
+                                          ///< than d; contact, a plane of fixed normal at t0
+                                          ///< and at t1 (so at every t)
   std::uint64_t toi_refined = 0;  ///< answer from the interval stage, TOI from a later stage
 
   /// Total number of queries counted.

@@ -3,6 +3,7 @@
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/normalize.hpp"
+#include "filter/separating_plane.hpp"
 #include "filter/static_stage.hpp"
 #include "filter/toi_narrowing.hpp"
 #include "filter/volume_exclusion.hpp"
@@ -22,6 +23,7 @@ std::optional<TimeInterval> through_contact_stages(const Query& q, const Questio
                  filter::VolumeExclusionStage{},  // 1. V(t) != 0 on [0, 1] (static error bound)
                  filter::UnitScalingStage{},      //    the query scaled towards 1; 1. again if out of range
                  filter::StaticQueryStage{},      //    nothing moves: CGAL's exact static predicates at t = 0
+                 filter::SeparatingPlaneStage{},  //    a plane separates them at t0 and at t1: apart throughout
                  filter::IntervalStage{},         // 2. V's roots and the in-plane rule in intervals
                  filter::ToiInCellStage{},        //    a collision's TOI in its root cell (double-double)
                  filter::FixedIntegerStage{},     // 3a. exact, in 1024-bit integers (no allocation)

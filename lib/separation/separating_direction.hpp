@@ -58,6 +58,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 
 #include "contact/vec3_ops.hpp"
 #include "exactccd/types.hpp"
@@ -142,6 +143,14 @@ struct SideRows {
   }
 };
 
+/// The threshold T of the header's step 4 for the normalised direction n: a computed gap
+/// between projections above it certifies an exact gap above d |n|.
+template <std::size_t N>
+double gap_threshold(const ProjectionFrame<N>& frame, const Vec3& n) {
+  const double r = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+  return ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
+}
+
 /// The gap along the normalised direction n certifies the separation (header, step 4): the
 /// projections of one set's rows stay farther than the threshold from the other's.
 template <std::size_t N>
@@ -158,19 +167,57 @@ bool gap_certified(const ProjectionFrame<N>& frame, const SideRows<N>& rows, con
   double a_lo, a_hi, b_lo, b_hi;
   extent(rows.first, rows.firsts, a_lo, a_hi);
   extent(rows.second, rows.seconds, b_lo, b_hi);
-  const double r = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
-  const double threshold = ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
+  const double threshold = gap_threshold(frame, n);
   return b_lo - a_hi > threshold || a_lo - b_hi > threshold;
+}
+
+/// As gap_certified, but the rows at t0 and those at t1 compared separately, the same set
+/// below the other at both ends: for a point x_i of the first set and x_j of the second,
+/// n.(x_j(t) - x_i(t)) is affine in t (linear motion), so above d |n| at t = 0 and at t = 1 it
+/// is above d |n| on all of [0, 1]; then, as in the header, every point of the second hull is
+/// farther than d from every point of the first at each t. Step 4's certification applies to
+/// the rows of each end as to all rows. Stronger than gap_certified (the hulls of both times
+/// at once): the primitives may move along n farther than their gap, as long as they move
+/// alike (a cloth's neighbouring elements, or sliding contact).
+template <std::size_t N>
+bool gap_certified_at_each_end(const ProjectionFrame<N>& frame, const SideRows<N>& rows, const Vec3& n) {
+  constexpr std::size_t P = N / 2;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto project = [&](std::size_t i) { return (n.x * frame.y[i].x + n.y * frame.y[i].y) + n.z * frame.y[i].z; };
+  // [end] = the rows at t0 (0) or at t1 (1): every point has one of each.
+  double a_lo[2] = {kInf, kInf}, a_hi[2] = {-kInf, -kInf}, b_lo[2] = {kInf, kInf}, b_hi[2] = {-kInf, -kInf};
+  for (std::size_t k = 0; k < rows.firsts; ++k) {
+    const std::size_t i = rows.first[k], end = i < P ? 0 : 1;
+    const double p = project(i);
+    a_lo[end] = std::min(a_lo[end], p);
+    a_hi[end] = std::max(a_hi[end], p);
+  }
+  for (std::size_t k = 0; k < rows.seconds; ++k) {
+    const std::size_t j = rows.second[k], end = j < P ? 0 : 1;
+    const double p = project(j);
+    b_lo[end] = std::min(b_lo[end], p);
+    b_hi[end] = std::max(b_hi[end], p);
+  }
+  const double threshold = gap_threshold(frame, n);
+  return (b_lo[0] - a_hi[0] > threshold && b_lo[1] - a_hi[1] > threshold) ||
+         (a_lo[0] - b_hi[0] > threshold && a_lo[1] - b_hi[1] > threshold);
+}
+
+/// n divided by its largest component magnitude (header, step 2), or nothing for a direction
+/// that is zero or not finite.
+inline std::optional<Vec3> normalised_direction(const Vec3& n) {
+  if (!(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) return std::nullopt;
+  const double m = std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
+  if (!(m > 0)) return std::nullopt;  // zero
+  return Vec3{n.x / m, n.y / m, n.z / m};
 }
 
 /// The gap along n normalised by its largest component magnitude (header, step 2) certifies
 /// the separation; false for a direction that is zero or not finite.
 template <std::size_t N>
 bool direction_certified(const ProjectionFrame<N>& frame, const SideRows<N>& rows, const Vec3& n) {
-  if (!(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) return false;
-  const double m = std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
-  if (!(m > 0)) return false;  // zero
-  return gap_certified(frame, rows, Vec3{n.x / m, n.y / m, n.z / m});
+  const std::optional<Vec3> u = normalised_direction(n);
+  return u && gap_certified(frame, rows, *u);
 }
 
 /// Feature pair f's natural direction at the rows `at` + its points (header: point-point

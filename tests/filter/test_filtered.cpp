@@ -42,6 +42,7 @@
 #include "numeric/fp_environment.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
+#include "filter/separating_plane.hpp"
 #include "filter/static_stage.hpp"
 #include "filter/toi_narrowing.hpp"
 #include "filter/volume_exclusion.hpp"
@@ -101,7 +102,8 @@ std::string describe(const std::optional<TimeInterval>& t) {
 
 std::string describe(const StageCounters& c) {
   return "stages: volume_exclusion " + std::to_string(c.volume_exclusion) + ", static_predicates " +
-         std::to_string(c.static_predicates) + ", interval " +
+         std::to_string(c.static_predicates) + ", separating_direction " + std::to_string(c.separating_direction) +
+         ", interval " +
          std::to_string(c.interval) + ", fixed_integer " + std::to_string(c.fixed_integer) + ", integer " +
          std::to_string(c.integer) + ", exact " +
          std::to_string(c.exact) + ", toi_refined " + std::to_string(c.toi_refined);
@@ -1128,6 +1130,8 @@ int run_each_stage_checking_environment(const TestQuery& q) {
     (void)filter::contact_at_end(query, 0);
     (void)filter::volume_sign_at_end(query, 1);
     check("static predicates");
+    (void)filter::separated_by_plane(query);
+    check("separating plane");
     pipeline::Findings findings;
     if (q.kind == Kind::vertex_face)
       (void)filter::interval_stage(from_rows<VertexFaceQuery>(q.rows), true, findings);
@@ -1198,20 +1202,21 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
                                Vec3{-0x1p+384, 0, 0}, Vec3{0x1p+384, 0x1p-697, 0}, Vec3{0, 0x1p-696, 0},
                                Vec3{-0x1p+383, 0x1p-696, 0}, Vec3{-0x1p+384, 0x1p-696, 0}},
                               -1});
-  // An edge pair of the helical strip (data/sim/sim-strip-edge-edge.csv, query 195: a common
-  // root of V and w, left open by the interval stage) with its x axis scaled by 2^-200 (exact; a
-  // per-axis power-of-two scale keeps the answer): exponent spread beyond the fixed-width
-  // integer stage's limit (integer_stage.hpp), so the GMP integer stage decides it.
+  // An edge pair of the helical strip (data/sim/sim-strip-edge-edge.csv, query 171: left open
+  // by the interval stage, and no plane separates it at both ends) with its x axis scaled by
+  // 2^-200 (exact; a per-axis power-of-two scale keeps the answer): exponent spread beyond the
+  // fixed-width integer stage's limit (integer_stage.hpp), so the GMP integer stage decides it.
+  // (Query 195, used before, is now decided by the separating-plane stage.)
   queries.push_back(TestQuery{
       Kind::edge_edge,
-      {Vec3{-0x1.889e1abf495dfp-203, 0x1.d9ee6dbf18a5dp-2, 0x1.4a0711c49cf91p-2},
-       Vec3{-0x1.881e2531b4d89p-203, 0x1.d953f7e1ce1a4p-2, 0x1.6e95c57706f1bp-2},
-       Vec3{-0x1.879e2fa420536p-203, 0x1.d8b98204838ebp-2, 0x1.151ac0c52df8ep-2},
-       Vec3{-0x1.871e3a168bcep-203, 0x1.d81f0c2739032p-2, 0x1.3b8b825256049p-2},
-       Vec3{-0x1.87d57ad85579p-203, 0x1.d8fc40dc3c22bp-2, 0x1.2ee2ec70ad8d5p-2},
-       Vec3{-0x1.87db453a0e36ep-203, 0x1.d9033e40d9ee8p-2, 0x1.50ee8b1b7d975p-2},
-       Vec3{-0x1.87e10f9bc6f5p-203, 0x1.d90a3ba577ba5p-2, 0x1.06344b5305ab6p-2},
-       Vec3{-0x1.87e6d9fd7fb2ep-203, 0x1.d911390a15863p-2, 0x1.262178b3299a7p-2}},
+      {Vec3{0x1.1c2cabad55f30p-202, 0x1.a94c1465084bep-2, 0x1.31ef61aa134cbp-2},
+       Vec3{0x1.889e1abf495f9p-203, 0x1.d9ee6dbf18a58p-2, 0x1.3545f4ab98681p-2},
+       Vec3{0x1.879e2fa420548p-203, 0x1.d8b98204838e7p-2, 0x1.115fef04d5e64p-2},
+       Vec3{0x1.871e3a168bcf2p-203, 0x1.d81f0c273902ep-2, 0x1.30eb15ebe7ddbp-2},
+       Vec3{0x1.1b9b0fe2bef6cp-202, 0x1.a872293b01761p-2, 0x1.19c7d93080007p-2},
+       Vec3{0x1.87d57ad8557aap-203, 0x1.d8fc40dc3c226p-2, 0x1.1793b1cfe7779p-2},
+       Vec3{0x1.87e10f9bc6f62p-203, 0x1.d90a3ba577ba1p-2, 0x1.02a5161065b01p-2},
+       Vec3{0x1.87e6d9fd7fb40p-203, 0x1.d911390a1585fp-2, 0x1.1ccb163171187p-2}},
       0});
   // A generic hit whose TOI the interval stage hands over as a cell (toi_refined).
   queries.push_back(TestQuery{Kind::vertex_face,
@@ -1235,6 +1240,7 @@ TEST(FilteredInput, RoundingModeIsRoundToNearestAfterEveryStage) {
   std::cout << "[ stages   ] reached " << describe(counters) << "; " << stage_calls << " direct stage calls\n";
   EXPECT_GT(counters.volume_exclusion, 0u);
   EXPECT_GT(counters.static_predicates, 0u);
+  EXPECT_GT(counters.separating_direction, 0u);
   EXPECT_GT(counters.interval, 0u);
   EXPECT_GT(counters.fixed_integer, 0u);
   EXPECT_GT(counters.integer, 0u);
