@@ -3,6 +3,10 @@
 // scene functions run over their broad phase's candidates.
 #include "exactccd/candidates.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <climits>
 #include <stdexcept>
@@ -91,25 +95,69 @@ bool disjoint_sides(const std::array<int, N>& row) {
   return ok;
 }
 
+#if defined(__SSE2__)
+/// A side's exact swept box over [0, 1] in SSE2 registers: (x, y) in one, z in the low lane of
+/// another, for the lower and the upper bounds.
+struct SideBox {
+  __m128d lo_xy, hi_xy, lo_z, hi_z;
+};
+
+/// The swept box of the vertices [begin, end) of a row at t0 and t1: minpd / maxpd (and their
+/// scalar forms for z) give the exact min and max of finite doubles (the positions are checked
+/// finite before any row is read; equal values of either sign of zero compare equal, so which
+/// one is kept changes no comparison below).
+template <std::size_t N>
+SideBox side_box(const std::array<int, N>& row, std::size_t begin, std::size_t end, const Vec3* x0, const Vec3* x1) {
+  SideBox box{};
+  for (std::size_t i = begin; i < end; ++i) {
+    const Vec3 &a = x0[row[i]], &b = x1[row[i]];
+    const __m128d a_xy = _mm_loadu_pd(&a.x), b_xy = _mm_loadu_pd(&b.x);
+    const __m128d a_z = _mm_load_sd(&a.z), b_z = _mm_load_sd(&b.z);
+    const __m128d lo_xy = _mm_min_pd(a_xy, b_xy), hi_xy = _mm_max_pd(a_xy, b_xy);
+    const __m128d lo_z = _mm_min_sd(a_z, b_z), hi_z = _mm_max_sd(a_z, b_z);
+    if (i == begin) {
+      box = {lo_xy, hi_xy, lo_z, hi_z};
+    } else {
+      box = {_mm_min_pd(box.lo_xy, lo_xy), _mm_max_pd(box.hi_xy, hi_xy), _mm_min_sd(box.lo_z, lo_z),
+             _mm_max_sd(box.hi_z, hi_z)};
+    }
+  }
+  return box;
+}
+#endif
+
+/// Whether the exact swept boxes over [0, 1] of a row's two sides (its first F indices, the
+/// others) are disjoint: the contact question's box test (tmax = 1, d = 0; vertex_boxes' exact
+/// min and max of input coordinates, the hull of a side's vertices), written out for the row's
+/// size so that a caller's list is one tight loop, in SSE2 where available (x86-64: two
+/// coordinates per instruction; the same comparisons, so the same answer as the scalar form).
+/// Comparisons of input doubles only: exact.
+template <std::size_t F, std::size_t N>
+bool disjoint_swept_boxes(const std::array<int, N>& row, const Vec3* x0, const Vec3* x1) {
+#if defined(__SSE2__)
+  const SideBox a = side_box(row, 0, F, x0, x1), b = side_box(row, F, N, x0, x1);
+  const __m128d apart_xy = _mm_or_pd(_mm_cmplt_pd(a.hi_xy, b.lo_xy), _mm_cmplt_pd(b.hi_xy, a.lo_xy));
+  const __m128d apart_z = _mm_or_pd(_mm_cmplt_sd(a.hi_z, b.lo_z), _mm_cmplt_sd(b.hi_z, a.lo_z));
+  return (_mm_movemask_pd(apart_xy) | (_mm_movemask_pd(apart_z) & 1)) != 0;
+#else
+  // The hull of the vertices [begin, end) of the row at t0 and t1 (min and max are exact).
+  const auto side_box = [&](std::size_t begin, std::size_t end) {
+    scene::Box box = scene::empty_box();
+    for (std::size_t i = begin; i < end; ++i) scene::add_vertex(box, x0[row[i]], x1[row[i]]);
+    return box;
+  };
+  return !scene::overlap(side_box(0, F), side_box(F, N));
+#endif
+}
+
 /// Whether the boxes over [0, tmax] grown by d of a row's two sides (its first F indices, the
 /// others) are disjoint: the broad phase's test bound for bound (vertex_boxes: the exact swept
 /// boxes for tmax = 1, add_vertex_until's certified ones otherwise; inflated(), which commutes
-/// with the hull), so a pair within d in [0, tmax] never has disjoint boxes. Written out for
-/// the row's fixed size: on a caller's list, most candidates end here.
+/// with the hull), so a pair within d in [0, tmax] never has disjoint boxes.
 template <std::size_t F, std::size_t N>
 bool disjoint_boxes(const std::array<int, N>& row, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
                     const CcdParams& params) {
-  if (params.tmax == 1 && !(params.min_distance > 0)) {  // the contact question: min and max only
-    const auto side_box = [&](std::size_t begin, std::size_t end) {
-      const Vec3 &a = x0[static_cast<std::size_t>(row[begin])], &b = x1[static_cast<std::size_t>(row[begin])];
-      scene::Box box{{{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}},
-                     {{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}}};
-      for (std::size_t i = begin + 1; i < end; ++i)
-        scene::add_vertex(box, x0[static_cast<std::size_t>(row[i])], x1[static_cast<std::size_t>(row[i])]);
-      return box;
-    };
-    return !scene::overlap(side_box(0, F), side_box(F, N));
-  }
+  if (params.tmax == 1 && !(params.min_distance > 0)) return disjoint_swept_boxes<F>(row, x0.data(), x1.data());
   scene::Box box[2];
   for (std::size_t s = 0; s < 2; ++s) box[s] = scene::empty_box();
   for (std::size_t i = 0; i < N; ++i) {
@@ -125,7 +173,7 @@ bool disjoint_boxes(const std::array<int, N>& row, const std::vector<Vec3>& x0, 
 }
 
 /// A CandidateSet as one range of the shared narrow phase, the kinds' lists one after the other
-/// in CollisionKind order, each candidate checked as it is read (read(): indices and sides,
+/// in CollisionKind order, each candidate checked as it is read (scan(): indices and sides,
 /// the box test, shared indices) against the positions.
 struct CandidateSetRange {
   const CandidateSet& set;
@@ -152,28 +200,41 @@ struct CandidateSetRange {
     return i;
   }
 
-  /// Reads candidate k: invalid (an index out of range, a degenerate side, sides sharing an
-  /// index), disjoint boxes, or its two sides in r.
-  scene::CandidateRead read(std::size_t k, PairSides& r) const {
-    const std::size_t i = list_of(k), j = k - offsets[i];
-    switch (i) {
-      case 0: return read_row<1>(set.vertex_face[j], 0, r);
-      case 1: return read_row<2>(set.edge_edge[j], 1, r);
-      case 2: return read_row<1>(set.point_edge[j], 2, r);
-      default: break;
+  /// Reads candidates [begin, end) in order, each checked as it is read (indices and sides,
+  /// then the box test, then shared indices), and calls visit(sides, k) for those whose boxes
+  /// overlap; false at the first invalid candidate or when visit returns false.
+  template <class Visit>
+  bool scan(std::size_t begin, std::size_t end, Visit&& visit) const {
+    while (begin < end) {
+      const std::size_t i = list_of(begin), stop = std::min(end, offsets[i + 1]);
+      const bool go_on = i == 0   ? scan_rows<1>(set.vertex_face, i, begin, stop, visit)
+                         : i == 1 ? scan_rows<2>(set.edge_edge, i, begin, stop, visit)
+                         : i == 2 ? scan_rows<1>(set.point_edge, i, begin, stop, visit)
+                                  : scan_rows<1>(set.point_point, i, begin, stop, visit);
+      if (!go_on) return false;
+      begin = stop;
     }
-    return read_row<1>(set.point_point[j], 3, r);
+    return true;
   }
 
-  template <std::size_t F, std::size_t N>
-  scene::CandidateRead read_row(const std::array<int, N>& row, std::size_t list, PairSides& r) const {
-    if (!valid_sides<F>(row, x0.size())) return scene::CandidateRead::invalid;
-    // Sides sharing a vertex always have overlapping boxes (both hold its position at t = 0),
-    // so a row found disjoint shares none: the check of shared indices can wait until here.
-    if (disjoint_boxes<F>(row, x0, x1, params)) return scene::CandidateRead::disjoint;
-    if (!disjoint_sides<F>(row)) return scene::CandidateRead::invalid;
-    r = sides_of(kKinds[list], row, static_cast<int>(F));
-    return scene::CandidateRead::pair;
+  /// scan() within list `list` (candidates [begin, stop) of it), one loop per question's box
+  /// test.
+  template <std::size_t F, std::size_t N, class Visit>
+  bool scan_rows(const std::vector<std::array<int, N>>& rows, std::size_t list, std::size_t begin, std::size_t stop,
+                 Visit& visit) const {
+    const std::array<int, N>* row = rows.data() + (begin - offsets[list]);
+    const std::size_t n = x0.size();
+    const bool contact = params.tmax == 1 && !(params.min_distance > 0);
+    for (std::size_t k = begin; k < stop; ++k, ++row) {
+      if (!valid_sides<F>(*row, n)) return false;
+      // Sides sharing a vertex always have overlapping boxes (both hold its position at t =
+      // 0), so a row found disjoint shares none: the check of shared indices can wait.
+      if (contact ? disjoint_swept_boxes<F>(*row, x0.data(), x1.data()) : disjoint_boxes<F>(*row, x0, x1, params))
+        continue;
+      if (!disjoint_sides<F>(*row)) return false;
+      if (!visit(sides_of(kKinds[list], *row, static_cast<int>(F)), k)) return false;
+    }
+    return true;
   }
 
   /// Candidate k as a CandidateCollision with the given time of impact.

@@ -285,34 +285,21 @@ class AnyCollision {
   bool boxes_checked_;
 };
 
-/// What reading one candidate of a checked range gives.
-enum class CandidateRead {
-  invalid,   ///< the candidate is malformed (stop: the caller reports it)
-  disjoint,  ///< its boxes over [0, tmax] grown by d do not overlap: it cannot collide
-  pair,      ///< its two sides, to decide
-};
-
 /// Hands every candidate k of a range to the question, question(r, k, worker), on `threads`
 /// threads in chunks of kNarrowPhaseChunk, until it returns false. The range has size() and
-/// CandidateRead read(k, PairSides& r), which checks candidate k as it is read and does the box
-/// test (so the question is asked with boxes_checked). An invalid candidate stops the loop. Returns true
-/// when every candidate was read and valid, false when the loop stopped early (a question's
-/// early exit or an invalid candidate: the caller then validates the whole range, so that bad
-/// input is reported, never answered).
+/// bool scan(begin, end, visit), which reads candidates [begin, end) in order, checks each as it
+/// is read and does the box test (so the question is asked with boxes_checked), calls
+/// visit(r, k) for the others, and returns false at an invalid candidate or when visit does. An
+/// invalid candidate stops the loop. Returns true when every candidate was read and valid,
+/// false when the loop stopped early (a question's early exit or an invalid candidate: the
+/// caller then validates the whole range, so that bad input is reported, never answered).
 template <class Range, class Question>
 bool decide_checked_range(const Range& range, unsigned threads, Question& question) {
   std::atomic<bool> stopped{false};
   parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
-    PairSides r;
-    for (std::size_t k = begin; k < end; ++k) {
-      const CandidateRead read = range.read(k, r);
-      if (read == CandidateRead::disjoint) continue;
-      if (read == CandidateRead::invalid || !question(r, k, w)) {
-        stopped = true;
-        return false;
-      }
-    }
-    return true;
+    if (range.scan(begin, end, [&](const PairSides& r, std::size_t k) { return question(r, k, w); })) return true;
+    stopped = true;
+    return false;
   });
   return !stopped.load();
 }
