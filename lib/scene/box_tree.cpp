@@ -80,7 +80,14 @@ void BoxTree::set_order(std::vector<std::pair<std::uint64_t, int>>& keys, unsign
   first_leaf_ = 1;
   while (static_cast<std::size_t>(first_leaf_) < leaves) first_leaf_ *= 2;
   nodes_.assign(2 * static_cast<std::size_t>(first_leaf_), empty_float_box());
-  leaf_boxes_.resize(n);
+  // Every lane starts empty (lo = +inf, hi = -inf): the lanes past the last primitive stay so.
+  LeafBoxes empty{};
+  for (int a = 0; a < 3; ++a)
+    for (int l = 0; l < kLeafSize; ++l) {
+      empty.lo[a][l] = std::numeric_limits<float>::infinity();
+      empty.hi[a][l] = -std::numeric_limits<float>::infinity();
+    }
+  leaves_.assign(leaves, empty);
 }
 
 std::vector<BoxTree::NodePair> BoxTree::pair_tasks(const BoxTree& other, std::size_t wanted) const {
@@ -132,8 +139,9 @@ void BoxTree::fit_nodes(unsigned threads) {
   const std::size_t leaves = (n + kLeafSize - 1) / kLeafSize;
   parallel_ranges(leaves, threads, kGrain / kLeafSize, [&](std::size_t begin, std::size_t end) {
     for (std::size_t g = begin; g < end; ++g) {
-      FloatBox box = leaf_boxes_[g * kLeafSize];
-      for (std::size_t k = g * kLeafSize + 1; k < std::min(n, (g + 1) * kLeafSize); ++k) box = hull(box, leaf_boxes_[k]);
+      FloatBox box = leaf_box(static_cast<int>(g * kLeafSize));
+      for (std::size_t k = g * kLeafSize + 1; k < std::min(n, (g + 1) * kLeafSize); ++k)
+        box = hull(box, leaf_box(static_cast<int>(k)));
       nodes_[static_cast<std::size_t>(first_leaf_) + g] = box;
     }
   });

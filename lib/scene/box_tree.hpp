@@ -17,6 +17,10 @@
 // boxes), whatever the order is: the order (and a stale one after refit) only changes the speed.
 #pragma once
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -56,7 +60,7 @@ class BoxTree {
   void refit(std::size_t n, BoxOf&& box_of, unsigned threads) {
     require_size(n);
     parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) leaf_boxes_[k] = float_box(box_of(static_cast<std::size_t>(order_[k])));
+      for (std::size_t k = begin; k < end; ++k) set_leaf_box(k, float_box(box_of(static_cast<std::size_t>(order_[k]))));
     });
     fit_nodes(threads);
   }
@@ -119,33 +123,98 @@ class BoxTree {
   /// are pending.
   static constexpr int kPairStack = 192;
 
+  /// The boxes of one leaf, structure of arrays: bound[axis][lane] for the kLeafSize
+  /// primitives of the leaf (lanes past the last primitive hold empty boxes and are masked
+  /// off), so that one box is tested against the whole leaf at once (overlap_mask).
+  struct alignas(32) LeafBoxes {
+    float lo[3][kLeafSize];
+    float hi[3][kLeafSize];
+  };
+
+  /// The lanes of `leaf` (a bit per lane) whose boxes overlap `box`, among `lanes`: the test of
+  /// overlap(FloatBox, FloatBox), lane by lane (the same six exact comparisons), four lanes per
+  /// SSE2 instruction where available.
+  static unsigned overlap_mask(const LeafBoxes& leaf, const FloatBox& box, unsigned lanes) {
+#if defined(__SSE2__)
+    static_assert(kLeafSize % 4 == 0, "whole SSE2 registers per leaf");
+    unsigned apart = 0;
+    for (int q = 0; q < kLeafSize; q += 4) {
+      __m128 away = _mm_setzero_ps();
+      for (int k = 0; k < 3; ++k) {
+        const __m128 lo = _mm_load_ps(&leaf.lo[k][q]), hi = _mm_load_ps(&leaf.hi[k][q]);
+        away = _mm_or_ps(away, _mm_or_ps(_mm_cmplt_ps(_mm_set1_ps(box.hi[k]), lo), _mm_cmplt_ps(hi, _mm_set1_ps(box.lo[k]))));
+      }
+      apart |= static_cast<unsigned>(_mm_movemask_ps(away)) << q;
+    }
+    return lanes & ~apart;
+#else
+    unsigned mask = 0;
+    for (int l = 0; l < kLeafSize; ++l) {
+      const FloatBox b{{{leaf.lo[0][l], leaf.lo[1][l], leaf.lo[2][l]}}, {{leaf.hi[0][l], leaf.hi[1][l], leaf.hi[2][l]}}};
+      mask |= static_cast<unsigned>(overlap(box, b)) << l;
+    }
+    return lanes & mask;
+#endif
+  }
+
+  /// The box of primitive k (in leaf order).
+  FloatBox leaf_box(int k) const {
+    const LeafBoxes& leaf = leaves_[static_cast<std::size_t>(k / kLeafSize)];
+    const int l = k % kLeafSize;
+    return {{{leaf.lo[0][l], leaf.lo[1][l], leaf.lo[2][l]}}, {{leaf.hi[0][l], leaf.hi[1][l], leaf.hi[2][l]}}};
+  }
+
+  /// Sets the box of primitive k (in leaf order).
+  void set_leaf_box(std::size_t k, const FloatBox& box) {
+    LeafBoxes& leaf = leaves_[k / kLeafSize];
+    const std::size_t l = k % kLeafSize;
+    for (int a = 0; a < 3; ++a) {
+      leaf.lo[a][l] = box.lo[a];
+      leaf.hi[a][l] = box.hi[a];
+    }
+  }
+
   /// The overlapping primitive pairs of leaf node a of this tree and leaf node b of `other`
   /// (self: same tree, each unordered pair once as (min, max), none with itself); false when
   /// the report stopped the traversal.
   template <class Report>
   bool leaf_pairs(const BoxTree& other, int a, int b, bool self, Report& report) const {
-    const int begin_a = (a - first_leaf_) * kLeafSize, end_a = std::min(begin_a + kLeafSize, size());
-    const int begin_b = (b - other.first_leaf_) * kLeafSize, end_b = std::min(begin_b + kLeafSize, other.size());
+    const int leaf_a = a - first_leaf_, leaf_b = b - other.first_leaf_;
+    const int begin_a = leaf_a * kLeafSize, begin_b = leaf_b * kLeafSize;
+    // A padding leaf (past the last primitive: an empty box, which an unbounded box still
+    // "overlaps") holds nothing.
+    if (begin_a >= size() || begin_b >= other.size()) return true;
+    const LeafBoxes &boxes_a = leaves_[static_cast<std::size_t>(leaf_a)], &boxes_b = other.leaves_[static_cast<std::size_t>(leaf_b)];
     // Only the boxes of each leaf that overlap the other leaf's box can be in a pair (it is the
-    // hull of that leaf's boxes): the pairs are tested among those.
-    int rows[kLeafSize], cols[kLeafSize], n_rows = 0, n_cols = 0;
-    for (int k = begin_a; k < end_a; ++k)
-      if (overlap(leaf_boxes_[k], other.nodes_[b])) rows[n_rows++] = k;
-    for (int l = begin_b; l < end_b; ++l)
-      if (overlap(other.leaf_boxes_[l], nodes_[a])) cols[n_cols++] = l;
-    for (int r = 0; r < n_rows; ++r) {
-      const int k = rows[r];
-      const FloatBox& box = leaf_boxes_[k];
-      const int i = order_[k];
-      for (int c = 0; c < n_cols; ++c) {
-        const int l = cols[c];
-        if (self && a == b && l <= k) continue;
-        if (!overlap(box, other.leaf_boxes_[l])) continue;
-        const int j = other.order_[l];
+    // hull of that leaf's boxes): the pairs are tested among those, row by row against the
+    // other leaf's lanes at once.
+    const unsigned rows = overlap_mask(boxes_a, other.nodes_[b], lanes_of(begin_a, size()));
+    const unsigned cols = overlap_mask(boxes_b, nodes_[a], lanes_of(begin_b, other.size()));
+    if (cols == 0) return true;
+    for (unsigned r = rows; r != 0; r &= r - 1) {
+      const int la = lowest_bit(r), k = begin_a + la;
+      unsigned hits = overlap_mask(boxes_b, leaf_box(k), cols);
+      if (self && a == b) hits &= ~((2u << la) - 1);  // l > k only: each unordered pair once
+      const int i = order_[static_cast<std::size_t>(k)];
+      for (; hits != 0; hits &= hits - 1) {
+        const int j = other.order_[static_cast<std::size_t>(begin_b + lowest_bit(hits))];
         if (!(self ? go_on(report, std::min(i, j), std::max(i, j)) : go_on(report, i, j))) return false;
       }
     }
     return true;
+  }
+
+  /// The lanes of the leaf starting at primitive `begin` that hold primitives (of `size`).
+  static unsigned lanes_of(int begin, int size) {
+    const int count = std::min(kLeafSize, size - begin);
+    return count >= kLeafSize ? (1u << kLeafSize) - 1 : (1u << count) - 1;
+  }
+
+  /// The index of the lowest set bit of a nonzero mask.
+  static int lowest_bit(unsigned mask) {
+    int i = 0;
+    while (!(mask >> i & 1u)) ++i;
+    return i;
   }
 
   /// report(i, j), and whether to go on (a report returning void always goes on).
@@ -180,7 +249,7 @@ class BoxTree {
   void fit_nodes(unsigned threads);
 
   std::vector<int> order_;       ///< primitive indices in leaf order
-  std::vector<FloatBox> leaf_boxes_;  ///< the primitives' boxes in leaf order (float_box)
+  std::vector<LeafBoxes> leaves_;  ///< the primitives' boxes in leaf order (float_box), by leaf
   std::vector<FloatBox> nodes_;       ///< node boxes, index 1..2 * first_leaf_ - 1 (0 unused)
   int first_leaf_ = 1;           ///< the index of the first leaf node (a power of two)
 };

@@ -8,6 +8,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "scene/broad_phase.hpp"
@@ -19,19 +21,42 @@ struct FloatBox {
   std::array<float, 3> lo, hi;
 };
 
+/// The float next to f towards -infinity, for f not NaN and not -infinity: std::nextafter(f,
+/// -inf) without the library call. IEEE 754 floats of one sign are ordered as their bit
+/// patterns: a positive f (+infinity included: its predecessor is the largest finite float)
+/// steps down by one in its bits, a negative one up by one; either zero goes to the negative
+/// float of least magnitude, -2^-149.
+inline float float_down(float f) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &f, sizeof bits);
+  if (f > 0)
+    --bits;
+  else if (f < 0)
+    ++bits;
+  else
+    bits = 0x80000001u;
+  float r = 0;
+  std::memcpy(&r, &bits, sizeof r);
+  return r;
+}
+
+/// The float next to f towards +infinity (float_down mirrored: -float_down(-f)), for f not NaN
+/// and not +infinity.
+inline float float_up(float f) { return -float_down(-f); }
+
 /// The largest float <= x. static_cast<float>(x) is, in any rounding direction, x itself or
 /// one of the two floats around it (or an infinity / the largest finite float on overflow); if
 /// it is above x, the float below it is not (it is the float below x's upper neighbour), and
-/// comparing a float with a double is exact. x = -inf gives -inf.
+/// comparing a float with a double is exact. x = -inf gives -inf (never stepped down).
 inline float float_below(double x) {
   const float f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  return static_cast<double>(f) > x ? float_down(f) : f;
 }
 
 /// The smallest float >= x (as float_below, mirrored).
 inline float float_above(double x) {
   const float f = static_cast<float>(x);
-  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  return static_cast<double>(f) < x ? float_up(f) : f;
 }
 
 /// The float box holding a double box (each bound rounded outwards).

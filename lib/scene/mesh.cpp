@@ -4,7 +4,10 @@
 
 namespace exactccd::scene {
 
-std::vector<Edge> unique_edges(const std::vector<Triangle>& triangles) {
+namespace {
+
+/// unique_edges by sorting every triangle edge (any indices).
+std::vector<Edge> sorted_unique_edges(const std::vector<Triangle>& triangles) {
   std::vector<Edge> edges;
   edges.reserve(3 * triangles.size());
   for (const Triangle& t : triangles)
@@ -14,6 +17,42 @@ std::vector<Edge> unique_edges(const std::vector<Triangle>& triangles) {
     }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+}  // namespace
+
+// Indices in [0, n): a counting sort by the lower index (the edges' second indices bucketed by
+// their first), then each bucket (a vertex's few higher neighbours) sorted and deduplicated in
+// place: linear in the triangles and the vertices, the same list as sorting every edge.
+std::vector<Edge> unique_edges(const std::vector<Triangle>& triangles) {
+  int lowest = 0, highest = -1;
+  for (const Triangle& t : triangles)
+    for (const int v : t) {
+      lowest = std::min(lowest, v);
+      highest = std::max(highest, v);
+    }
+  if (lowest < 0 || static_cast<std::size_t>(highest) >= 4 * triangles.size() + 16) return sorted_unique_edges(triangles);
+  const std::size_t n = static_cast<std::size_t>(highest) + 1;
+  std::vector<int> start(n + 1, 0);
+  for (const Triangle& t : triangles)
+    for (int i = 0; i < 3; ++i) ++start[static_cast<std::size_t>(std::min(t[i], t[(i + 1) % 3])) + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<int> higher(static_cast<std::size_t>(start[n]));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const Triangle& t : triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int a = t[i], b = t[(i + 1) % 3];
+      higher[static_cast<std::size_t>(fill[static_cast<std::size_t>(std::min(a, b))]++)] = std::max(a, b);
+    }
+  std::vector<Edge> edges;
+  edges.reserve(higher.size() / 2 + 1);
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto begin = higher.begin() + start[v], end = higher.begin() + start[v + 1];
+    std::sort(begin, end);
+    for (auto it = begin; it != end; ++it)
+      if (it == begin || *it != *(it - 1)) edges.push_back({static_cast<int>(v), *it});
+  }
   return edges;
 }
 

@@ -105,10 +105,14 @@ template <class SceneT>
 ScenePrimitives topology(const SceneT& s, bool with_points) {
   const std::vector<Triangle>& triangles = triangles_of(s);
   ScenePrimitives p;
-  p.edges = unique_edges(triangles);
-  for (const auto& e : s.edges) p.edges.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
-  std::sort(p.edges.begin(), p.edges.end());
-  p.edges.erase(std::unique(p.edges.begin(), p.edges.end()), p.edges.end());
+  p.edges = unique_edges(triangles);  // sorted, unique
+  if (!s.edges.empty()) {  // the extra edges sorted and merged in
+    const auto middle = static_cast<std::ptrdiff_t>(p.edges.size());
+    for (const auto& e : s.edges) p.edges.push_back({std::min(e[0], e[1]), std::max(e[0], e[1])});
+    std::sort(p.edges.begin() + middle, p.edges.end());
+    std::inplace_merge(p.edges.begin(), p.edges.begin() + middle, p.edges.end());
+    p.edges.erase(std::unique(p.edges.begin(), p.edges.end()), p.edges.end());
+  }
   std::vector<bool> used(s.positions_t0.size(), false), on_edge(s.positions_t0.size(), false);
   for (const Triangle& t : triangles)
     for (int v : t) used[v] = true;

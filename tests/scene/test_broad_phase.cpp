@@ -9,11 +9,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <random>
 
 #include "exactccd/exactccd.hpp"
 #include "scene/box_tree.hpp"
 #include "scene/broad_phase.hpp"
+#include "scene/float_box.hpp"
+#include "scene/mesh.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "tests/scene_support.hpp"
@@ -297,15 +303,75 @@ TEST(BroadPhase, SceneFunctionsUnchangedAtEveryThreadCount) {
 }
 
 
-/// Random boxes on a small integer grid (many equal, touching and nested boxes), `n` of them.
+/// unique_edges (a counting sort by the lower index) against sorting every edge of the
+/// triangles, on random meshes: dense and sparse index ranges, repeated and degenerate
+/// triangles, no triangles.
+TEST(Mesh, UniqueEdgesEqualSortingEveryEdge) {
+  std::mt19937 rng(5);
+  for (int n = 0; n < 300; ++n) {
+    const int vertices = 1 + n % 40 * (n % 7 == 0 ? 100 : 1);
+    std::uniform_int_distribution<int> index(0, vertices - 1);
+    std::vector<scene::Triangle> triangles(static_cast<std::size_t>(n % 50));
+    for (scene::Triangle& t : triangles) t = {index(rng), index(rng), index(rng)};
+    if (n % 5 == 0 && !triangles.empty()) triangles.push_back(triangles.front());
+    std::vector<scene::Edge> want;
+    for (const scene::Triangle& t : triangles)
+      for (int i = 0; i < 3; ++i) want.push_back({std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3])});
+    std::sort(want.begin(), want.end());
+    want.erase(std::unique(want.begin(), want.end()), want.end());
+    EXPECT_EQ(scene::unique_edges(triangles), want) << "mesh " << n;
+  }
+}
+
+/// float_down / float_up against std::nextafter, and float_below / float_above bracketing
+/// doubles: zeros, subnormals, the normal range's ends, infinities and random floats.
+TEST(FloatBox, NeighboursAndOutwardRoundingMatchTheLibrary) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> values{0.0f, -0.0f, std::numeric_limits<float>::denorm_min(), -std::numeric_limits<float>::denorm_min(),
+                            std::numeric_limits<float>::min(), -std::numeric_limits<float>::min(),
+                            std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(), 1.0f, -1.0f};
+  std::mt19937 rng(8);
+  std::uniform_int_distribution<std::uint32_t> bits;
+  while (values.size() < 200000) {
+    const std::uint32_t b = bits(rng);
+    float f = 0;
+    std::memcpy(&f, &b, sizeof f);
+    if (!std::isnan(f) && std::isfinite(f)) values.push_back(f);
+  }
+  const auto same = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  for (const float f : values) {
+    ASSERT_TRUE(same(scene::float_down(f), std::nextafter(f, -inf))) << f;
+    ASSERT_TRUE(same(scene::float_up(f), std::nextafter(f, inf))) << f;
+  }
+  EXPECT_TRUE(same(scene::float_down(inf), std::numeric_limits<float>::max()));
+  EXPECT_TRUE(same(scene::float_up(-inf), -std::numeric_limits<float>::max()));
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-160, 140);
+  for (int n = 0; n < 200000; ++n) {
+    const double x = std::ldexp(unit(rng), exponent(rng));
+    const float below = scene::float_below(x), above = scene::float_above(x);
+    ASSERT_LE(static_cast<double>(below), x) << x;
+    ASSERT_GE(static_cast<double>(above), x) << x;
+    ASSERT_GT(static_cast<double>(std::nextafter(below, inf)), x) << x;  // the largest float <= x
+    ASSERT_LT(static_cast<double>(std::nextafter(above, -inf)), x) << x;  // the smallest float >= x
+  }
+}
+
+/// Random boxes on a small integer grid (many equal, touching and nested boxes), `n` of them;
+/// every 13th unbounded on one axis, every 29th on all three (as boxes grown to infinity after
+/// an overflow: they overlap every box, and must not be paired with a leaf's unused lanes).
 std::vector<scene::Box> grid_boxes(std::size_t n, std::mt19937& rng) {
   std::uniform_int_distribution<int> corner(0, 12), size(0, 3);
+  constexpr double inf = std::numeric_limits<double>::infinity();
   std::vector<scene::Box> boxes(n);
-  for (auto& b : boxes)
+  for (std::size_t i = 0; i < n; ++i) {
+    scene::Box& b = boxes[i];
     for (int k = 0; k < 3; ++k) {
       b.lo[k] = corner(rng);
       b.hi[k] = b.lo[k] + size(rng);
+      if ((i % 13 == 5 && k == static_cast<int>(i % 3)) || i % 29 == 3) b.lo[k] = -inf, b.hi[k] = inf;
     }
+  }
   return boxes;
 }
 
@@ -334,16 +400,22 @@ TEST(BoxTreePairs, EveryOverlappingPairOnceWhateverTheTasks) {
       for (const std::size_t wanted : {1u, 5u, 64u, 100000u}) {
         const std::string what = std::to_string(na) + " x " + std::to_string(nb) + ", " + std::to_string(wanted);
         std::vector<std::array<int, 2>> self, cross;
-        // The trees report the pairs whose float boxes overlap (here, on the integer grid, exactly
-        // the overlapping ones); the exact test keeps the overlapping ones.
+        // The trees report the pairs whose float boxes overlap: here, on the integer grid, exactly
+        // the overlapping ones (so a pair reported that does not overlap is an error too).
+        std::size_t extra = 0;
         for (const auto& task : ta.pair_tasks(ta, wanted))
           ta.pairs_from(ta, task, [&](int i, int j) {
+            ASSERT_TRUE(i >= 0 && j >= 0 && static_cast<std::size_t>(i) < na && static_cast<std::size_t>(j) < na) << what;
             if (overlapping(a[static_cast<std::size_t>(i)], a[static_cast<std::size_t>(j)])) self.push_back({i, j});
+            else ++extra;
           });
         for (const auto& task : ta.pair_tasks(tb, wanted))
           ta.pairs_from(tb, task, [&](int i, int j) {
+            ASSERT_TRUE(i >= 0 && j >= 0 && static_cast<std::size_t>(i) < na && static_cast<std::size_t>(j) < nb) << what;
             if (overlapping(a[static_cast<std::size_t>(i)], b[static_cast<std::size_t>(j)])) cross.push_back({i, j});
+            else ++extra;
           });
+        EXPECT_EQ(extra, 0u) << what << ": pairs reported whose boxes do not overlap";
         std::sort(self.begin(), self.end());  // duplicates kept: each pair must come once
         std::sort(cross.begin(), cross.end());
         EXPECT_EQ(self, want_self) << what;
