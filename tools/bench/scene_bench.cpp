@@ -23,7 +23,9 @@
 // those steps). With --frames=T0,T1 (two mesh files of one step, e.g. the Scalable CCD
 // dataset's cloth-ball frames) also BM_Frames*: the whole find_collisions and earliest_toi, the
 // streamed broad phase, and the narrow phase over its listed candidates (filtered, naive), on 1
-// and 2 threads.
+// and 2 threads. BM_StepGrid and BM_FramesGrid: the uniform grid broad phase of
+// tools/lib/broad_phase on one thread, at three cell sides, against BM_StepBroadStream/BM_FramesBroadStream
+// on one thread (and BM_StepSweep, the serial sort and sweep, which lists its candidates).
 #include <benchmark/benchmark.h>
 #ifdef EXACTCCD_BENCH_TBB
 #include <tbb/blocked_range.h>
@@ -47,6 +49,7 @@
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene/streamed_step.hpp"
+#include "broad_phase/uniform_grid.hpp"
 #include "methods/methods.hpp"
 
 namespace {
@@ -273,6 +276,27 @@ void BM_StepBroadStream(benchmark::State& state) {
   step_label(state, f);
 }
 
+/// The uniform grid's broad phase (tools/lib/broad_phase/uniform_grid.hpp, one thread): the
+/// same work as BM_StepBroadStream on one thread (topology, vertex boxes, the structure built,
+/// every pair reported and counted), cell side state.range(1) / 4 times the mean edge box
+/// extent: issue 23's comparison of the broad-phase structures.
+void grid_step(const Scene& scene, double factor, std::size_t& seen) {
+  const scene::ScenePrimitives topology = scene::scene_topology(scene, CcdParams{});
+  const std::vector<scene::Box> boxes = scene::vertex_boxes(scene.positions_t0, scene.positions_t1, CcdParams{});
+  const tools::UniformGrid grid(boxes, scene.triangles, topology.edges, topology.vertices,
+                                factor * tools::UniformGrid::mean_edge_extent(boxes, topology.edges));
+  seen += grid.pairs([](const scene::FoundPair&) {});
+}
+
+void BM_StepGrid(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  std::size_t seen = 0;
+  for (auto _ : state) grid_step(f.scene, static_cast<double>(state.range(1)) / 4, seen);
+  benchmark::DoNotOptimize(seen);
+  step_label(state, f);
+  state.counters["threads"] = 1;
+}
+
 /// The whole earliest_toi step (broad phase and exact narrow phase with the shrinking window)
 /// on state.range(1) threads.
 void BM_StepEarliest(benchmark::State& state) {
@@ -365,6 +389,7 @@ BENCHMARK_CAPTURE(BM_StepNarrow, filtered, Method::filtered) EXACTCCD_STEP_SIZES
 BENCHMARK_CAPTURE(BM_StepNarrow, naive, tools::Method::naive) EXACTCCD_STEP_SIZES;
 BENCHMARK(BM_StepWhole) EXACTCCD_STEP_SIZES;
 BENCHMARK(BM_StepBroadStream) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_StepGrid)->ArgsProduct({{16, 64, 220, 708}, {2, 4, 8, 16}})->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
 BENCHMARK(BM_StepEarliest) EXACTCCD_STEP_SIZES;
 BENCHMARK(BM_LineSearchFirst) EXACTCCD_STEP_SIZES;
 BENCHMARK(BM_LineSearchNext) EXACTCCD_STEP_SIZES;
@@ -450,6 +475,14 @@ void BM_FramesBroadStream(benchmark::State& state) {
   frames_label(state);
 }
 
+/// BM_StepGrid on the frames: cell side state.range(0) / 4 times the mean edge box extent.
+void BM_FramesGrid(benchmark::State& state) {
+  std::size_t seen = 0;
+  for (auto _ : state) grid_step(frames().scene, static_cast<double>(state.range(0)) / 4, seen);
+  benchmark::DoNotOptimize(seen);
+  frames_label(state);
+}
+
 #ifdef EXACTCCD_BENCH_TBB
 // The project's pool (parallel.hpp: std::threads started per call, chunks handed out from one
 // atomic counter) against oneTBB's work stealing on the same two loops, for docs/scene.md's
@@ -516,6 +549,8 @@ void register_frames(const std::string& spec) {
                                                                                              : BM_FramesBroadStream);
     b->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
   }
+  benchmark::RegisterBenchmark("BM_FramesGrid", BM_FramesGrid)
+      ->Arg(2)->Arg(4)->Arg(8)->Arg(16)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
   benchmark::RegisterBenchmark("BM_FramesNarrow/filtered", BM_FramesNarrow<Method>, Method::filtered)
       ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
   benchmark::RegisterBenchmark("BM_FramesNarrow/naive", BM_FramesNarrow<tools::Method>, tools::Method::naive)
