@@ -147,7 +147,9 @@ struct SideRows {
 /// between projections above it certifies an exact gap above d |n|.
 template <std::size_t N>
 double gap_threshold(const ProjectionFrame<N>& frame, const Vec3& n) {
-  const double r = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+  // d = 0 (contact): d |n| is 0 whatever n, and the square root is not needed (the same value:
+  // r is finite for a normalised n, and 0 r = 0).
+  const double r = frame.d == 0 ? 0.0 : std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
   return ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
 }
 
