@@ -52,11 +52,11 @@ def main(step_path, memory_path, png, note=""):
     sizes = sorted({r for (_, r, _) in t})
     print(f"Medians of {context.get('num_cpus', '?')}-CPU wall times, one run ({context.get('date', '')}). {note}\n")
     print("| triangles | candidates | threads | broad, streamed | broad, listed (tree) | broad reused (refit) | "
-          "old sweep (1 thr.) | narrow filtered | narrow naive | find_collisions | earliest_toi | "
+          "old sweep (1 thr.) | uniform grid (1 thr., best cell side) | narrow filtered | narrow naive | find_collisions | earliest_toi | "
           "find_collisions / naive narrow | earliest_toi / naive narrow | same, 1-thread CPU times | "
           "1 thr. / 2 thr. (find_collisions, earliest_toi) | line search: first, next, fresh | "
           "peak RSS per triangle (2 thr.) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     nan = (float("nan"), 0, 0, float("nan"))
     for r in sizes:
         for th in (1, 2):
@@ -68,6 +68,9 @@ def main(step_path, memory_path, png, note=""):
                 c = lambda p: t.get((p, r, 1), nan)[3]  # noqa: E731
                 cpu = f"{c('BM_StepWhole') / c('BM_StepNarrow/naive'):.2f}x, {c('BM_StepEarliest') / c('BM_StepNarrow/naive'):.2f}x"
             sweep = t.get(("BM_StepSweep", r, 1), nan)[0]
+            # The grid's runs are keyed (phase, resolution, 4 x cell side / mean edge extent).
+            grids = [(t[("BM_StepGrid", r, f)][0], f / 4) for f in (2, 4, 8, 16) if ("BM_StepGrid", r, f) in t]
+            grid = f"{min(grids)[0]:.1f} ms ({min(grids)[1]:g}x)" if grids and th == 1 else ""
             speed = ""
             if th == 2:
                 one = lambda p: t.get((p, r, 1), nan)[0]  # noqa: E731
@@ -79,7 +82,7 @@ def main(step_path, memory_path, png, note=""):
                        f"({m['max_rss_kb_step'] / 1024:.0f} MiB; scene alone {m['max_rss_kb_scene'] / 1024:.0f} MiB)")
             line = f"{g('BM_LineSearchFirst'):.1f}, {g('BM_LineSearchNext'):.1f}, {g('BM_LineSearchFresh'):.1f} ms"
             print(f"| {tri:,} | {cand:,} | {th} | {g('BM_StepBroadStream'):.1f} ms | {g('BM_StepBroad'):.1f} ms | "
-                  f"{g('BM_StepRefit'):.1f} ms | {sweep:.1f} ms | {g('BM_StepNarrow/filtered'):.1f} ms | {naive:.1f} ms | "
+                  f"{g('BM_StepRefit'):.1f} ms | {sweep:.1f} ms | {grid} | {g('BM_StepNarrow/filtered'):.1f} ms | {naive:.1f} ms | "
                   f"{whole:.1f} ms | {earliest:.1f} ms | {whole / naive:.2f}x | {earliest / naive:.2f}x | {cpu} | "
                   f"{speed} | {line} | {mem} |")
     fig, ax = plt.subplots(figsize=(8, 5))

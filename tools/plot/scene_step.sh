@@ -4,8 +4,9 @@
 # threads, wall time, median of 3 repetitions), and the peak resident memory of one 2-thread
 # find_collisions step per size, each in a fresh process (getrusage ru_maxrss). Writes
 # docs/figures/scene_step.json, scene_step_memory.json, scene_step.md and scene_step.png.
-# Needs a Release build of scene_bench in build/ and Debian's python3-matplotlib.
-# Also the cloth-ball step (BM_Frames*, docs/figures/scene_frames.{json,txt}) and the side-by-side
+# Needs a Release build of scene_bench and candidates_bench in build/ and Debian's python3-matplotlib.
+# Also a caller's candidates with disjoint boxes (candidates_bench, docs/figures/candidates_disjoint.txt),
+# the cloth-ball step (BM_Frames*, docs/figures/scene_frames.{json,txt}) and the side-by-side
 # run against the Scalable CCD CPU pipeline (docs/figures/scene_anchor.md) when their inputs are
 # there (below).
 # Usage: [EXACTCCD_ANCHOR_BUILD=DIR] bash tools/plot/scene_step.sh   (about 30 minutes on an idle 2-core machine)
@@ -20,6 +21,10 @@ build/scene_bench --benchmark_filter='BM_Step|BM_LineSearch' --benchmark_repetit
 : > "$out/scene_step_memory.json.tmp"
 for r in 16 64 220 708; do build/scene_bench --peak_memory="$r" >> "$out/scene_step_memory.json.tmp"; done
 mv "$out/scene_step_memory.json.tmp" "$out/scene_step_memory.json"
+# A caller's candidates whose boxes do not overlap (issue 23): find_collisions over them against
+# a bare loop of the box test over the same rows, one thread, medians of 5 (CPU time).
+build/candidates_bench --benchmark_filter=Disjoint --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+  > "$out/candidates_disjoint.txt"
 echo "== load after: $(uptime)"
 /usr/bin/python3 tools/plot/scene_step.py "$out/scene_step.json" "$out/scene_step_memory.json" "$out/scene_step.png" \
   "load before: $load; after: $(uptime)" > "$out/scene_step.md"
