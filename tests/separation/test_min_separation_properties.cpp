@@ -1042,17 +1042,7 @@ TEST(MinSeparationApi, RejectsInvalidParamsAndMethods) {
 }
 
 template <class Q>
-using RationalOf = std::conditional_t<
-    std::is_same_v<Q, VertexFaceQuery>, VertexFaceQueryT<mpq_class>,
-    std::conditional_t<
-        std::is_same_v<Q, EdgeEdgeQuery>, EdgeEdgeQueryT<mpq_class>,
-        std::conditional_t<
-            std::is_same_v<Q, PointEdgeQuery>, PointEdgeQueryT<mpq_class>,
-            std::conditional_t<
-                std::is_same_v<Q, PointPointQuery>, PointPointQueryT<mpq_class>,
-                std::conditional_t<std::is_same_v<Q, EdgeEdge2dQuery>, EdgeEdge2dQueryT<mpq_class>,
-                                   std::conditional_t<std::is_same_v<Q, PointEdge2dQuery>,
-                                                      PointEdge2dQueryT<mpq_class>, PointPoint2dQueryT<mpq_class>>>>>>>;
+using RationalOf = typename kinds::kind_of<Q>::template Query<mpq_class>;
 
 template <class Q>
 RationalOf<Q> rational_query(const Rows<Q>& r) {
