@@ -7,7 +7,7 @@
 // well-kept, handle the coplanar cases directly, and with Exact_predicates_inexact_constructions
 // _kernel every do_intersect is a filtered predicate (interval arithmetic with an exact
 // fallback: Do_intersect_3 is among the kernel's filtered predicates), so the answer is exact
-// for double input and needs no construction. tests/test_scene.cpp cross-checks both ways.
+// for double input and needs no construction. tests/scene/test_scene.cpp cross-checks both ways.
 // CGAL's tests require non-degenerate triangles and segments (a precondition, unchecked in
 // release builds), so each triangle is first reduced exactly to its hull: a triangle, a
 // segment or a point.
