@@ -37,6 +37,20 @@ class CancelScope {
   const std::atomic<bool>* previous_;
 };
 
+/// What every public scene function opens first, for its whole call (docs/design.md, 8): the
+/// floating-point environment the filters are proved in (numeric/fp_environment.hpp), installed
+/// before anything compares a double (validation included: DAZ would read -2^-1074 as -0), and
+/// the call's cancellation flag (SceneOptions::cancel; nullptr: not cancellable).
+class SceneCall {
+ public:
+  /// Installs both for this scope.
+  explicit SceneCall(const std::atomic<bool>* cancel = nullptr) : cancel_scope_(cancel) {}
+
+ private:
+  numeric::DefaultFpEnvironment fp_environment_;  // constructed first: members in this order
+  CancelScope cancel_scope_;
+};
+
 /// True when `flag` is set (nullptr: never).
 inline bool cancel_requested(const std::atomic<bool>* flag) {
   return flag != nullptr && flag->load(std::memory_order_relaxed);

@@ -43,6 +43,7 @@ threads) raises ValueError with the library's message. Long calls can be interru
 (KeyboardInterrupt; the worker threads stop).
 """
 
+from . import _exactccd
 from ._exactccd import (  # noqa: F401
     EDGE_EDGE,
     SceneBroadPhase,
@@ -56,37 +57,18 @@ from ._exactccd import (  # noqa: F401
     candidates_is_collision_free,
     candidates_max_collision_free_step,
     earliest_toi,
-    edge_edge_2d_ccd,
-    edge_edge_2d_toi,
-    edge_edge_ccd,
-    edge_edge_toi,
     find_collisions,
     intersection_free,
     is_collision_free,
     max_collision_free_step,
-    point_edge_2d_ccd,
-    point_edge_2d_toi,
-    point_edge_ccd,
-    point_edge_toi,
-    point_point_2d_ccd,
-    point_point_2d_toi,
-    point_point_ccd,
-    point_point_toi,
     read_mesh,
-    vertex_face_ccd,
-    vertex_face_toi,
 )
 
-#: The batch functions' kinds: name -> (rows per query: every point at t = 0, then at t = 1; coordinates per row).
-KINDS = {
-    "vertex_face": (8, 3),
-    "edge_edge": (8, 3),
-    "point_edge": (6, 3),
-    "point_point": (4, 3),
-    "edge_edge_2d": (8, 2),
-    "point_edge_2d": (6, 2),
-    "point_point_2d": (4, 2),
-}
+#: The batch functions' kinds (the library's one list of kinds): function stem -> (rows per
+#: query: every point at t = 0, then at t = 1; coordinates per row). Each has <stem>_ccd and
+#: <stem>_toi, imported here from the extension (their stubs: __init__.pyi).
+KINDS = dict(_exactccd.KINDS)
+globals().update({f"{k}_{f}": getattr(_exactccd, f"{k}_{f}") for k in KINDS for f in ("ccd", "toi")})
 
 __all__ = [
     "EDGE_EDGE", "KIND_NAMES", "KINDS", "POINT_EDGE", "POINT_POINT", "SceneBroadPhase", "VERTEX_FACE",

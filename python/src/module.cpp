@@ -805,7 +805,15 @@ PYBIND11_MODULE(_exactccd, m) {
     }
   });
 
-  kinds::for_each_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
+  // The batch functions of every kind of the one list, and KINDS: function stem -> (rows per
+  // query, coordinates per row), from which the package imports them (exactccd/__init__.py).
+  py::dict batch_kinds;
+  kinds::for_each_kind([&](auto kind) {
+    using Kind = decltype(kind);
+    Batch<Kind>::define(m);
+    batch_kinds[py::str(std::string(Kind::function))] = py::make_tuple(2 * Kind::points, Kind::dimension);
+  });
+  m.attr("KINDS") = batch_kinds;
 
   m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);
   m.attr("EDGE_EDGE") = static_cast<int>(CollisionKind::edge_edge);

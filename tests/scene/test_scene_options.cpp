@@ -1,5 +1,5 @@
 // The options every interface shares: the one range of `threads` (0..1024: the C++ scene and
-// candidate functions, the C API; the CLI's --threads is 1..1024, tests/cli_input.cmake),
+// candidate functions, the C API; the CLI's --threads has the same 0..1024, tests/cli/cli_input.cmake),
 // cancellation of a scene call (SceneOptions::cancel), error messages whose numbers read back
 // (shortest round-trip text), and the one version (exactccd_version(), exactccd/version.h).
 #include <gtest/gtest.h>

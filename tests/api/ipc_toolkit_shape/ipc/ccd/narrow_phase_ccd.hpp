@@ -1,5 +1,5 @@
 // NOT the IPC Toolkit: a stand-in for its header src/ipc/ccd/narrow_phase_ccd.hpp, with an
-// interface of the same shape, so that tests/test_ipc_toolkit.cpp compiles and runs
+// interface of the same shape, so that tests/api/test_ipc_toolkit.cpp compiles and runs
 // exactccd/ipc_toolkit.hpp on machines without the toolkit (CI: the project's dependencies are
 // Debian packages, and the toolkit is not one). Copied in shape from ipc-sim/ipc-toolkit at
 // commit b40e9c07 (src/ipc/ccd/narrow_phase_ccd.hpp and the aliases it uses from
