@@ -95,7 +95,11 @@ class RegulaFalsi {
 /// on the root's side: the estimate falls on an end of the cell and is moved inside, next to
 /// it). Bisection while fewer than two approximations are known (an approximation of 0: not
 /// computed), when the last two are equal, and after three steps in a row that did not halve
-/// the cell, so that the cell shrinks at least geometrically.
+/// the cell, so that the cell shrinks at least geometrically (by half every four steps at
+/// worst, as bisection does every step). Why three: a secant step landing within an ulp or so of
+/// the root, then the step to its neighbour, are two steps that do not halve the cell yet are
+/// the fast path; any fixed count keeps the bound geometric and changes no result (only the
+/// doubles examined: tightest_enclosure).
 class Secant {
  public:
   /// Before the loop (nothing to prepare: the examined doubles give the approximations).
@@ -131,8 +135,11 @@ class Secant {
 /// The tightest double interval around the only root t* of f in the open cell (lo, hi) (lo < hi
 /// doubles; f's sign at lo is sign_at_lo != 0, the opposite at hi). `sign(m)` returns SignAt:
 /// f's exact sign at a double m inside the cell (0: f(m) = 0) and an approximation; `guess` a
-/// double near t* (any value); `chooser` a Bisection or RegulaFalsi (for a RegulaFalsi, f > 0
-/// at lo).
+/// double near t* (any value); `chooser` a Bisection, RegulaFalsi (f > 0 at lo) or Secant.
+/// The chooser only decides which doubles are examined, never the result: every examined m is
+/// strictly inside the cell (moved there otherwise), the signs are exact, and the loop ends
+/// only at an exact zero (the point) or at consecutive doubles around the sign change, the one
+/// tightest double enclosure of t*.
 template <class Sign, class Chooser>
 TimeInterval tightest_enclosure(double lo, double hi, int sign_at_lo, double guess, Sign&& sign, Chooser& chooser) {
   constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -206,6 +206,7 @@ class BoxTree {
 
   /// The lanes of the leaf starting at primitive `begin` that hold primitives (of `size`).
   static unsigned lanes_of(int begin, int size) {
+    static_assert(kLeafSize < 32, "a bit per lane in an unsigned mask");
     const int count = std::min(kLeafSize, size - begin);
     return count >= kLeafSize ? (1u << kLeafSize) - 1 : (1u << count) - 1;
   }

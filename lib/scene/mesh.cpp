@@ -25,6 +25,11 @@ std::vector<Edge> sorted_unique_edges(const std::vector<Triangle>& triangles) {
 // Indices in [0, n): a counting sort by the lower index (the edges' second indices bucketed by
 // their first), then each bucket (a vertex's few higher neighbours) sorted and deduplicated in
 // place: linear in the triangles and the vertices, the same list as sorting every edge.
+// Used when the highest index is below 4 T + 16 (T triangles): the two per-index arrays then
+// hold at most 4 T + 17 ints each, a small multiple of the 3 T triangle edges bucketed anyway;
+// a mesh whose triangles use every vertex has at most 3 T of them, so this admits every such
+// mesh with room for some unused vertices. Sparser indices (or negative ones) take the general
+// sort: the same list, any index range.
 std::vector<Edge> unique_edges(const std::vector<Triangle>& triangles) {
   int lowest = 0, highest = -1;
   for (const Triangle& t : triangles)

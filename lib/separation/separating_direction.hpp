@@ -181,10 +181,14 @@ bool gap_certified(const ProjectionFrame<N>& frame, const SideRows<N>& rows, con
 /// the rows of each end as to all rows. Stronger than gap_certified (the hulls of both times
 /// at once): the primitives may move along n farther than their gap, as long as they move
 /// alike (a cloth's neighbouring elements, or sliding contact).
+///
+/// Each set needs a row at each end (a point has one at t0 and one at t1, so a nonempty set
+/// does): an empty one would leave its bounds infinite, and the infinite gap would certify.
 template <std::size_t N>
 bool gap_certified_at_each_end(const ProjectionFrame<N>& frame, const SideRows<N>& rows, const Vec3& n) {
   constexpr std::size_t P = N / 2;
   constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (rows.firsts == 0 || rows.seconds == 0) return false;  // nothing to separate (see above)
   const auto project = [&](std::size_t i) { return (n.x * frame.y[i].x + n.y * frame.y[i].y) + n.z * frame.y[i].z; };
   // [end] = the rows at t0 (0) or at t1 (1): every point has one of each.
   double a_lo[2] = {kInf, kInf}, a_hi[2] = {-kInf, -kInf}, b_lo[2] = {kInf, kInf}, b_hi[2] = {-kInf, -kInf};

@@ -38,8 +38,10 @@ UniformGrid::UniformGrid(const std::vector<scene::Box>& vertex_boxes, const std:
     if (!(lo[k] <= hi[k])) lo[k] = hi[k] = 0;
     origin_[k] = lo[k];
     // At most 2^20 cells per axis (keys fit in 60 bits); more would be a cell far too small.
-    cells_[k] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((hi[k] - lo[k]) * inverse_cell_)) + 1, 1,
-                                         std::int64_t{1} << 20);
+    // Clamped as a double first: the quotient may overflow (a tiny cell), and converting a
+    // double beyond the int64 range is undefined.
+    const double span = std::floor((hi[k] - lo[k]) * inverse_cell_) + 1;
+    cells_[k] = span < 0x1p20 ? std::max<std::int64_t>(1, static_cast<std::int64_t>(span)) : std::int64_t{1} << 20;
   }
   triangle_boxes_.resize(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) triangle_boxes_[t] = triangle_box(t);
