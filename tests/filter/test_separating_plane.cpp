@@ -85,6 +85,21 @@ TEST(SeparatingPlaneBound, NeverCertifiesDistanceDAtEitherEndInAnyRoundingMode) 
   EXPECT_EQ(useful, cases) << "at a quarter of the distance every configuration is certified apart";
 }
 
+// A set with no rows would keep infinite bounds and an infinite gap: never certified (fails
+// without the guard in gap_certified_at_each_end).
+TEST(SeparatingPlaneBound, AnEmptySetIsNeverCertified) {
+  Rows x;
+  for (int i = 0; i < 8; ++i) x[i] = {static_cast<double>(i), 2.0 * i, -1.0 * i};
+  const separation::ProjectionFrame<8> frame(x, 0.0);
+  for (const separation::Side only : {separation::Side::first, separation::Side::second, separation::Side::none}) {
+    std::array<separation::Side, 4> side;
+    side.fill(only);
+    const separation::SideRows<8> rows(side);
+    for (const Vec3& n : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0.5, 1, -1}})
+      EXPECT_FALSE(separation::gap_certified_at_each_end(frame, rows, n)) << static_cast<int>(only);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Soundness against the exact method.
 
