@@ -133,7 +133,8 @@ class BoxTree {
 
   /// The lanes of `leaf` (a bit per lane) whose boxes overlap `box`, among `lanes`: the test of
   /// overlap(FloatBox, FloatBox), lane by lane (the same six exact comparisons), four lanes per
-  /// SSE2 instruction where available.
+  /// SSE2 instruction where available. cmpltps is the scalar `<` (false on a NaN operand, as in
+  /// overlap(): a NaN bound never makes boxes apart, in either form; float_box never makes one).
   static unsigned overlap_mask(const LeafBoxes& leaf, const FloatBox& box, unsigned lanes) {
 #if defined(__SSE2__)
     static_assert(kLeafSize % 4 == 0, "whole SSE2 registers per leaf");

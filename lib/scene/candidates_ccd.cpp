@@ -131,7 +131,9 @@ SideBox side_box(const std::array<int, N>& row, std::size_t begin, std::size_t e
 /// min and max of input coordinates, the hull of a side's vertices), written out for the row's
 /// size so that a caller's list is one tight loop, in SSE2 where available (x86-64: two
 /// coordinates per instruction; the same comparisons, so the same answer as the scalar form).
-/// Comparisons of input doubles only: exact.
+/// Comparisons of input doubles only: exact. NaN: minpd / maxpd would return their second
+/// operand where std::min / std::max return their first, but no NaN reaches here (the
+/// positions are validated finite first: checked_positions).
 template <std::size_t F, std::size_t N>
 bool disjoint_swept_boxes(const std::array<int, N>& row, const Vec3* x0, const Vec3* x1) {
 #if defined(__SSE2__)
