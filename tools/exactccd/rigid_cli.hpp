@@ -2,6 +2,7 @@
 // over files of lib/io/rigid_csv.hpp. The subcommands parse their options and hand over here.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,5 +43,15 @@ Method rigid_method(tools::Method m);
 
 /// `check --motion rigid` with check's parsed options.
 int run_rigid_check(const ParsedOptions& options);
+
+/// `bench --motion rigid` with bench's parsed options: per file and d, the rigid filtered method's
+/// mean and median time per query against the linear filtered method on the linearised queries
+/// (ratio of the means, one run, interleaved), FP/FN, queries decided with GMP or CGAL.
+int run_rigid_bench(const ParsedOptions& options, const std::vector<double>& distances, bool relative, double tmax);
+
+/// `generate rigid`: the degenerate rigid families (d = 0) and the tumbling-body sets into DIR
+/// (rigid-families-{vertex-face,edge-edge}.csv, rigid-sim-<scene>-{vertex-face,edge-edge}.csv),
+/// at most max_queries per sim file (0: all), truth computed on `threads` threads.
+int generate_rigid(std::uint64_t seed, std::size_t max_queries, unsigned threads, const std::string& out);
 
 }  // namespace exactccd::cli
