@@ -1,0 +1,130 @@
+#include "rigid/direction_stage.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "contact/vec3_ops.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "rigid/rigid_frame.hpp"
+
+namespace exactccd::rigid {
+namespace {
+
+using contact::cross;
+using contact::operator-;
+
+double largest(const Vec3& v) { return std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))); }
+
+/// R(q) as rows of fl(M(q)) and fl(|q|^2) (header, step 2).
+struct Rotation {
+  double m[3][3];
+  double n2;
+  explicit Rotation(const Quaternion& q) {
+    const double ww = q.w * q.w, xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
+    n2 = ((ww + xx) + yy) + zz;
+    m[0][0] = ((ww + xx) - yy) - zz, m[1][1] = ((ww - xx) + yy) - zz, m[2][2] = ((ww - xx) - yy) + zz;
+    m[0][1] = 2 * (q.x * q.y - q.w * q.z), m[1][0] = 2 * (q.x * q.y + q.w * q.z);
+    m[0][2] = 2 * (q.x * q.z + q.w * q.y), m[2][0] = 2 * (q.x * q.z - q.w * q.y);
+    m[1][2] = 2 * (q.y * q.z - q.w * q.x), m[2][1] = 2 * (q.y * q.z + q.w * q.x);
+  }
+  Vec3 operator()(const Vec3& p) const {
+    return {((m[0][0] * p.x + m[0][1] * p.y) + m[0][2] * p.z) / n2, ((m[1][0] * p.x + m[1][1] * p.y) + m[1][2] * p.z) / n2,
+            ((m[2][0] * p.x + m[2][1] * p.y) + m[2][2] * p.z) / n2};
+  }
+};
+
+/// The bound on the sagitta of a point of largest component `extent` (header, step 4), given
+/// the body's c~ = fl(cos(Phi / 2)).
+double sagitta_bound(double extent, double cosine) {
+  if (!(cosine > 0x1p-20)) return 4 * extent;  // a long (or uncertain) arc: the ball
+  return (2 * extent * ((1 - cosine) + 0x1p-49)) * (1 + 0x1p-50) + 0x1p-1070;
+}
+
+double cosine_of_half_angle(const Quaternion& a, const Quaternion& b) {
+  const double dot = ((a.w * b.w + a.x * b.x) + a.y * b.y) + a.z * b.z;
+  const double na = ((a.w * a.w + a.x * a.x) + a.y * a.y) + a.z * a.z, nb = ((b.w * b.w + b.x * b.x) + b.y * b.y) + b.z * b.z;
+  return dot / std::sqrt(na * nb);
+}
+
+template <class Query>
+bool separated(const Query& q, double d) {
+  using Kind = kind_of<Query>;
+  constexpr int first = Kind::first_points;
+  const auto points = body_points(q);
+  const Rotation ra[2] = {Rotation(q.a_t0.q), Rotation(q.a_t1.q)}, rb[2] = {Rotation(q.b_t0.q), Rotation(q.b_t1.q)};
+  // Rotated points r[t][i] (t = 0, 1), translations relative to A's c(0).
+  std::array<std::array<Vec3, 4>, 2> r;
+  for (int t = 0; t < 2; ++t)
+    for (int i = 0; i < 4; ++i) r[t][i] = (i < first ? ra[t] : rb[t])(points[i]);
+  const Vec3 o = q.a_t0.c;
+  const std::array<Vec3, 2> ta{Vec3{0, 0, 0}, q.a_t1.c - o}, tb{q.b_t0.c - o, q.b_t1.c - o};
+  double extent_a = 0, extent_b = 0, y = 0;
+  for (int i = 0; i < 4; ++i) (i < first ? extent_a : extent_b) = std::fmax(i < first ? extent_a : extent_b, largest(points[i]));
+  for (int t = 0; t < 2; ++t) {
+    y = std::fmax(y, std::fmax(largest(ta[t]), largest(tb[t])));
+    for (int i = 0; i < 4; ++i) y = std::fmax(y, largest(r[t][i]));
+  }
+  if (!std::isfinite(y)) return false;
+  const double sa = sagitta_bound(extent_a, cosine_of_half_angle(q.a_t0.q, q.a_t1.q));
+  const double sb = sagitta_bound(extent_b, cosine_of_half_angle(q.b_t0.q, q.b_t1.q));
+  const double distance = (d + sa) + sb, slack = y * 0x1p-41;
+  // Certifies the gap along n, normalised by its largest component (header, steps 5 and 6).
+  const auto certifies = [&](const Vec3& n) {
+    const auto project = [&](const Vec3& v) { return (n.x * v.x + n.y * v.y) + n.z * v.z; };
+    double ta_lo = project(ta[0]), ta_hi = ta_lo, tb_lo = project(tb[0]), tb_hi = tb_lo;
+    const double ta1 = project(ta[1]), tb1 = project(tb[1]);
+    ta_lo = std::fmin(ta_lo, ta1), ta_hi = std::fmax(ta_hi, ta1), tb_lo = std::fmin(tb_lo, tb1), tb_hi = std::fmax(tb_hi, tb1);
+    double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
+    for (int t = 0; t < 2; ++t)
+      for (int i = 0; i < 4; ++i) {
+        const double p = project(r[t][i]);
+        if (i < first)
+          a_lo = std::fmin(a_lo, p), a_hi = std::fmax(a_hi, p);
+        else
+          b_lo = std::fmin(b_lo, p), b_hi = std::fmax(b_hi, p);
+      }
+    const double norm = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+    const double threshold = (distance * norm) * (1 + 0x1p-47) + slack + 0x1p-1060;
+    return (tb_lo + b_lo) - (ta_hi + a_hi) > threshold || (ta_lo + a_lo) - (tb_hi + b_hi) > threshold;
+  };
+  const auto along = [&](const Vec3& n) {
+    const double m = largest(n);
+    if (!(m > 0 && std::isfinite(m))) return false;
+    return certifies(Vec3{n.x / m, n.y / m, n.z / m});
+  };
+  for (int t = 0; t < 2; ++t) {
+    std::array<Vec3, 4> x;  // rounded world positions at t (any rounding: only directions)
+    for (int i = 0; i < 4; ++i) {
+      const Vec3& c = i < first ? ta[t] : tb[t];
+      x[i] = {c.x + r[t][i].x, c.y + r[t][i].y, c.z + r[t][i].z};
+    }
+    for (const kinds::Feature& f : Kind::features) {
+      const auto p = [&](int j) { return x[static_cast<std::size_t>(f.points[j])]; };
+      Vec3 n{};
+      switch (f.pair) {
+        case kinds::FeaturePair::point_point: n = p(1) - p(0); break;
+        case kinds::FeaturePair::point_edge: {
+          const Vec3 e = p(2) - p(1), c = cross(p(0) - p(1), e);
+          const double m = largest(c);
+          if (!(m > 0 && std::isfinite(m))) continue;
+          n = cross(e, Vec3{c.x / m, c.y / m, c.z / m});
+          break;
+        }
+        case kinds::FeaturePair::point_triangle: n = cross(p(2) - p(1), p(3) - p(1)); break;
+        case kinds::FeaturePair::edge_edge: n = cross(p(1) - p(0), p(3) - p(2)); break;
+      }
+      if (along(n)) return true;
+    }
+  }
+  for (int axis = 0; axis < 3; ++axis)
+    if (certifies(Vec3{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0})) return true;
+  return false;
+}
+
+}  // namespace
+
+bool separated_beyond(const RigidVertexFaceQuery& q, double d) { return separated(q, d); }
+bool separated_beyond(const RigidEdgeEdgeQuery& q, double d) { return separated(q, d); }
+
+}  // namespace exactccd::rigid
