@@ -14,7 +14,7 @@ namespace {
 using contact::cross;
 using contact::operator-;
 
-double largest(const Vec3& v) { return std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))); }
+double largest(const Vec3& v) { return std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z))); }
 
 /// R(q) as rows of fl(M(q)) and fl(|q|^2) (header, step 2).
 struct Rotation {
@@ -60,10 +60,10 @@ bool separated(const Query& q, double d) {
   const Vec3 o = q.a_t0.c;
   const std::array<Vec3, 2> ta{Vec3{0, 0, 0}, q.a_t1.c - o}, tb{q.b_t0.c - o, q.b_t1.c - o};
   double extent_a = 0, extent_b = 0, y = 0;
-  for (int i = 0; i < 4; ++i) (i < first ? extent_a : extent_b) = std::fmax(i < first ? extent_a : extent_b, largest(points[i]));
+  for (int i = 0; i < 4; ++i) (i < first ? extent_a : extent_b) = std::max(i < first ? extent_a : extent_b, largest(points[i]));
   for (int t = 0; t < 2; ++t) {
-    y = std::fmax(y, std::fmax(largest(ta[t]), largest(tb[t])));
-    for (int i = 0; i < 4; ++i) y = std::fmax(y, largest(r[t][i]));
+    y = std::max(y, std::max(largest(ta[t]), largest(tb[t])));
+    for (int i = 0; i < 4; ++i) y = std::max(y, largest(r[t][i]));
   }
   if (!std::isfinite(y)) return false;
   const double sa = sagitta_bound(extent_a, cosine_of_half_angle(q.a_t0.q, q.a_t1.q));
@@ -74,15 +74,15 @@ bool separated(const Query& q, double d) {
     const auto project = [&](const Vec3& v) { return (n.x * v.x + n.y * v.y) + n.z * v.z; };
     double ta_lo = project(ta[0]), ta_hi = ta_lo, tb_lo = project(tb[0]), tb_hi = tb_lo;
     const double ta1 = project(ta[1]), tb1 = project(tb[1]);
-    ta_lo = std::fmin(ta_lo, ta1), ta_hi = std::fmax(ta_hi, ta1), tb_lo = std::fmin(tb_lo, tb1), tb_hi = std::fmax(tb_hi, tb1);
+    ta_lo = std::min(ta_lo, ta1), ta_hi = std::max(ta_hi, ta1), tb_lo = std::min(tb_lo, tb1), tb_hi = std::max(tb_hi, tb1);
     double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
     for (int t = 0; t < 2; ++t)
       for (int i = 0; i < 4; ++i) {
         const double p = project(r[t][i]);
         if (i < first)
-          a_lo = std::fmin(a_lo, p), a_hi = std::fmax(a_hi, p);
+          a_lo = std::min(a_lo, p), a_hi = std::max(a_hi, p);
         else
-          b_lo = std::fmin(b_lo, p), b_hi = std::fmax(b_hi, p);
+          b_lo = std::min(b_lo, p), b_hi = std::max(b_hi, p);
       }
     const double norm = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
     const double threshold = (distance * norm) * (1 + 0x1p-47) + slack + 0x1p-1060;

@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
+#include <type_traits>
 
 #include "contact/polynomial.hpp"
 #include "exactccd/rigid.hpp"
@@ -74,15 +76,53 @@ struct SlopedPoly {
   }
 };
 
-/// A normalized rigid query's positions (scaled by D) and volume as interval polynomials.
+/// A normalized rigid query's positions (scaled by D) and volume as interval polynomials. The
+/// volume is built at construction; the positions on first use (most queries that reach the
+/// interval stage are decided by the volume's roots alone).
 template <class Query>
 class IntervalFrame {
  public:
   using Kind = kind_of<Query>;
+  using IQuery = std::conditional_t<std::is_same_v<Kind, kinds::VertexFace>, RigidVertexFaceQueryT<Interval>,
+                                    RigidEdgeEdgeQueryT<Interval>>;
 
-  explicit IntervalFrame(const Query& q) {
-    using IQuery = std::conditional_t<std::is_same_v<Kind, kinds::VertexFace>, RigidVertexFaceQueryT<Interval>,
-                                      RigidEdgeEdgeQueryT<Interval>>;
+  explicit IntervalFrame(const Query& q) : iq_(to_intervals(q)), parts_(iq_) {
+    volume_ = SlopedPoly<5>(volume_polynomial(iq_));
+  }
+
+  /// The positions at the double t.
+  std::array<Vec3T<Interval>, 4> at(double t) const {
+    const auto& position = positions();
+    std::array<Vec3T<Interval>, 4> out;
+    for (int i = 0; i < 4; ++i) out[i] = {position[i].x.at(t), position[i].y.at(t), position[i].z.at(t)};
+    return out;
+  }
+  /// The positions over [a, b], with slopes.
+  std::array<Vec3T<Dual>, 4> over(double a, double b) const {
+    const auto& position = positions();
+    std::array<Vec3T<Dual>, 4> out;
+    for (int i = 0; i < 4; ++i) out[i] = {position[i].x.over(a, b), position[i].y.over(a, b), position[i].z.over(a, b)};
+    return out;
+  }
+  /// The value enclosures alone over [a, b].
+  std::array<Vec3T<Interval>, 4> boxes(double a, double b) const {
+    const auto& position = positions();
+    std::array<Vec3T<Interval>, 4> out;
+    for (int i = 0; i < 4; ++i)
+      out[i] = {position[i].x.over(a, b).value, position[i].y.over(a, b).value, position[i].z.over(a, b).value};
+    return out;
+  }
+  /// D at t, and over [a, b].
+  Interval D_at(double t) const { return D().at(t); }
+  Dual D_over(double a, double b) const { return D().over(a, b); }
+  /// The volume polynomial of degree 5 (file comment).
+  const SlopedPoly<5>& volume() const { return volume_; }
+
+ private:
+  using P0 = contact::Poly<Interval, 0>;
+  using Positions = std::array<Vec3T<SlopedPoly<5>>, 4>;
+
+  static IQuery to_intervals(const Query& q) {
     IQuery iq;
     const auto pose = [](const RigidPose& p) {
       return RigidPoseT<Interval>{{Interval(p.c.x), Interval(p.c.y), Interval(p.c.z)},
@@ -95,40 +135,8 @@ class IntervalFrame {
       v = {Interval(points[k].x), Interval(points[k].y), Interval(points[k].z)};
       ++k;
     });
-    const ScaledFrame<Interval> frame = scaled_frame(iq);
-    for (int i = 0; i < 4; ++i)
-      position_[i] = {SlopedPoly<5>(frame.position[i].x), SlopedPoly<5>(frame.position[i].y),
-                      SlopedPoly<5>(frame.position[i].z)};
-    D_ = SlopedPoly<4>(frame.D);
-    volume_ = SlopedPoly<5>(volume_polynomial(iq, frame));
+    return iq;
   }
-
-  /// The positions at the double t.
-  std::array<Vec3T<Interval>, 4> at(double t) const {
-    std::array<Vec3T<Interval>, 4> out;
-    for (int i = 0; i < 4; ++i) out[i] = {position_[i].x.at(t), position_[i].y.at(t), position_[i].z.at(t)};
-    return out;
-  }
-  /// The positions over [a, b], with slopes.
-  std::array<Vec3T<Dual>, 4> over(double a, double b) const {
-    std::array<Vec3T<Dual>, 4> out;
-    for (int i = 0; i < 4; ++i) out[i] = {position_[i].x.over(a, b), position_[i].y.over(a, b), position_[i].z.over(a, b)};
-    return out;
-  }
-  /// The value enclosures alone over [a, b].
-  std::array<Vec3T<Interval>, 4> boxes(double a, double b) const {
-    std::array<Vec3T<Interval>, 4> out;
-    for (int i = 0; i < 4; ++i)
-      out[i] = {position_[i].x.over(a, b).value, position_[i].y.over(a, b).value, position_[i].z.over(a, b).value};
-    return out;
-  }
-  /// D at t, and over [a, b].
-  Interval D_at(double t) const { return D_.at(t); }
-  Dual D_over(double a, double b) const { return D_.over(a, b); }
-  /// The volume polynomial of degree 5 (file comment).
-  const SlopedPoly<5>& volume() const { return volume_; }
-
- private:
   template <class F>
   static void set_interval_points(RigidVertexFaceQueryT<Interval>& q, F&& f) {
     f(q.p), f(q.a), f(q.b), f(q.c);
@@ -138,24 +146,39 @@ class IntervalFrame {
     f(q.a0), f(q.a1), f(q.b0), f(q.b1);
   }
 
-  using P0 = contact::Poly<Interval, 0>;
+  const Positions& positions() const {
+    if (!positions_) {
+      Positions p;
+      const auto points = body_points(iq_);
+      for (int i = 0; i < 4; ++i) {
+        const auto x = parts_.position(points[i], i < Kind::first_points);
+        p[i] = {SlopedPoly<5>(x.x), SlopedPoly<5>(x.y), SlopedPoly<5>(x.z)};
+      }
+      positions_.emplace(p);
+    }
+    return *positions_;
+  }
+  const SlopedPoly<4>& D() const {
+    if (!D_) D_.emplace(parts_.D);
+    return *D_;
+  }
+
   static Vec3T<P0> constant(const Vec3T<Interval>& v) { return {P0{{v.x}}, P0{{v.y}}, P0{{v.z}}}; }
 
-  static contact::Poly<Interval, 5> volume_polynomial(const RigidVertexFaceQueryT<Interval>& q,
-                                                      const ScaledFrame<Interval>& frame) {
+  /// Vertex-face: n.(N - a D), n = (b - a) x (c - a) (B's constant normal).
+  contact::Poly<Interval, 5> volume_polynomial(const RigidVertexFaceQueryT<Interval>& q) const {
     using contact::cross;
     const Vec3T<Interval> ab{q.b.x - q.a.x, q.b.y - q.a.y, q.b.z - q.a.z}, ac{q.c.x - q.a.x, q.c.y - q.a.y, q.c.z - q.a.z};
     const Vec3T<Interval> n = cross(ab, ac);
-    const auto& N = frame.position[0];
-    const auto& D = frame.D;
+    const auto N = parts_.position(q.p, true);
     const auto component = [&](const contact::Poly<Interval, 5>& Nk, const Interval& ak, const Interval& nk) {
-      return P0{{nk}} * (Nk - P0{{ak}} * D);
+      return P0{{nk}} * (Nk - P0{{ak}} * parts_.D);
     };
     return component(N.x, q.a.x, n.x) + component(N.y, q.a.y, n.y) + component(N.z, q.a.z, n.z);
   }
 
-  static contact::Poly<Interval, 5> volume_polynomial(const RigidEdgeEdgeQueryT<Interval>& q,
-                                                      const ScaledFrame<Interval>&) {
+  /// Edge-edge: the world-frame numerator of the file comment.
+  contact::Poly<Interval, 5> volume_polynomial(const RigidEdgeEdgeQueryT<Interval>& q) const {
     using contact::cross;
     using contact::dot;
     const auto qa = linear_path(q.a_t0.q, q.a_t1.q), qb = linear_path(q.b_t0.q, q.b_t1.q);
@@ -170,9 +193,11 @@ class IntervalFrame {
     return first + widen<5>(dot(ma_ea, mb_b0eb)) - widen<5>(dot(ma_eaa0, mb_eb));
   }
 
-  std::array<Vec3T<SlopedPoly<5>>, 4> position_;
-  SlopedPoly<4> D_;
+  IQuery iq_;
+  ScaledFrameParts<IQuery> parts_;
   SlopedPoly<5> volume_;
+  mutable std::optional<Positions> positions_;
+  mutable std::optional<SlopedPoly<4>> D_;
 };
 
 }  // namespace exactccd::rigid

@@ -9,6 +9,7 @@
 // and an inexact one makes the query unusable here (the exact path answers it).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -31,7 +32,7 @@ std::optional<std::pair<Query, double>> normalized(const Query& query, double d)
   // Lengths.
   double largest = 0;
   const auto note = [&](const Vec3& v) {
-    largest = std::fmax(largest, std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))));
+    largest = std::max(largest, std::max(std::fabs(v.x), std::max(std::fabs(v.y), std::fabs(v.z))));
   };
   for (const RigidPose* p : {&q.a_t0, &q.a_t1, &q.b_t0, &q.b_t1}) note(p->c);
   for (const Vec3& p : body_points(q)) note(p);
@@ -48,7 +49,7 @@ std::optional<std::pair<Query, double>> normalized(const Query& query, double d)
   for (const auto& [t0, t1] : {std::pair{&q.a_t0, &q.a_t1}, std::pair{&q.b_t0, &q.b_t1}}) {
     double m = 0;
     for (const Quaternion* r : {&t0->q, &t1->q})
-      m = std::fmax(m, std::fmax(std::fmax(std::fabs(r->w), std::fabs(r->x)), std::fmax(std::fabs(r->y), std::fabs(r->z))));
+      m = std::max(m, std::max(std::max(std::fabs(r->w), std::fabs(r->x)), std::max(std::fabs(r->y), std::fabs(r->z))));
     const filter::UnitScale unit = filter::unit_scale(m);  // m > 0: valid input
     for (Quaternion* r : {&t0->q, &t1->q})
       *r = {scaled(r->w, unit), scaled(r->x, unit), scaled(r->y, unit), scaled(r->z, unit)};

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <type_traits>
+#include <utility>
 
 #include "contact/contact_polynomials.hpp"
 #include "contact/polynomial.hpp"
@@ -80,34 +81,57 @@ struct ScaledFrame {
   contact::Poly<NT, 4> D;                             ///< |qA(t)|^2 |qB(t)|^2
 };
 
-/// The scaled frame of a query with coordinates of an exact ring NT (mpz_class, mpq_class).
+/// The parts of the scaled frame shared by every point (file comment): the norms, D, the
+/// relative rotation conj(qB) qA and the rotated translation M(conj qB)(cA - cB).
+template <class Query>
+class ScaledFrameParts {
+ public:
+  using NT = std::decay_t<decltype(std::declval<const Query&>().a_t0.c.x)>;
+  using P0 = contact::Poly<NT, 0>;
+
+  explicit ScaledFrameParts(const Query& q) {
+    const auto qa = linear_path(q.a_t0.q, q.a_t1.q), qb = linear_path(q.b_t0.q, q.b_t1.q);
+    norm_a = squared_norm(qa);
+    norm_b = squared_norm(qb);
+    D = norm_a * norm_b;
+    const auto negate = [](const contact::Poly<NT, 1>& p) { return P0::zero() - p; };
+    const auto qb_conj = conjugate(qb, negate);
+    relative = product(qb_conj, qa);  // degree 2: M(relative) = D R(qB)^T R(qA)
+    using contact::operator-;
+    const auto dc = linear_path(q.a_t0.c, q.a_t1.c) - linear_path(q.b_t0.c, q.b_t1.c);
+    translation = rotate_scaled(qb_conj, dc);  // M(qB)^T (cA - cB): degree 3
+  }
+
+  /// D(t) times the position of body point p (of body A when on_a, else of B) in B's frame.
+  contact::PolyVec3<NT, 5> position(const Vec3T<NT>& point, bool on_a) const {
+    const Vec3T<P0> p{P0{{point.x}}, P0{{point.y}}, P0{{point.z}}};
+    if (on_a) {
+      const auto r = rotate_scaled(relative, p);  // degree 4
+      return {translation.x * norm_a + widen<5>(r.x), translation.y * norm_a + widen<5>(r.y),
+              translation.z * norm_a + widen<5>(r.z)};
+    }
+    return {widen<5>(p.x * D), widen<5>(p.y * D), widen<5>(p.z * D)};
+  }
+
+  contact::Poly<NT, 2> norm_a;  ///< |qA(t)|^2
+  contact::Poly<NT, 2> norm_b;  ///< |qB(t)|^2
+  contact::Poly<NT, 4> D;       ///< |qA(t)|^2 |qB(t)|^2
+  QuaternionT<contact::Poly<NT, 2>> relative;  ///< conj(qB(t)) qA(t)
+  contact::PolyVec3<NT, 3> translation;         ///< M(conj qB(t)) (cA(t) - cB(t))
+};
+
+/// The scaled frame of a query with coordinates of an exact ring NT (mpz_class, mpq_class) or
+/// intervals.
 template <class Query>
 auto scaled_frame(const Query& q) {
-  using NT = std::decay_t<decltype(q.a_t0.c.x)>;
   using Kind = kind_of<Query>;
-  using P0 = contact::Poly<NT, 0>;
-  ScaledFrame<NT> f;
-  const auto qa = linear_path(q.a_t0.q, q.a_t1.q), qb = linear_path(q.b_t0.q, q.b_t1.q);
-  f.norm_a = squared_norm(qa);
-  f.norm_b = squared_norm(qb);
-  f.D = f.norm_a * f.norm_b;
-  const auto negate = [](const contact::Poly<NT, 1>& p) { return P0::zero() - p; };
-  const auto qb_conj = conjugate(qb, negate);
-  const auto relative = product(qb_conj, qa);  // degree 2: M(relative) = D R(qB)^T R(qA)
-  using contact::operator-;
-  const auto dc = linear_path(q.a_t0.c, q.a_t1.c) - linear_path(q.b_t0.c, q.b_t1.c);
-  const auto translation = rotate_scaled(qb_conj, dc);  // M(qB)^T (cA - cB): degree 3
+  const ScaledFrameParts<Query> parts(q);
+  ScaledFrame<typename ScaledFrameParts<Query>::NT> f;
+  f.norm_a = parts.norm_a;
+  f.norm_b = parts.norm_b;
+  f.D = parts.D;
   const auto points = body_points(q);
-  for (int i = 0; i < 4; ++i) {
-    const Vec3T<P0> p{P0{{points[i].x}}, P0{{points[i].y}}, P0{{points[i].z}}};
-    if (i < Kind::first_points) {
-      const auto r = rotate_scaled(relative, p);  // degree 4
-      f.position[i] = {translation.x * f.norm_a + widen<5>(r.x), translation.y * f.norm_a + widen<5>(r.y),
-                       translation.z * f.norm_a + widen<5>(r.z)};
-    } else {
-      f.position[i] = {widen<5>(p.x * f.D), widen<5>(p.y * f.D), widen<5>(p.z * f.D)};
-    }
-  }
+  for (int i = 0; i < 4; ++i) f.position[i] = parts.position(points[i], i < Kind::first_points);
   return f;
 }
 
