@@ -82,10 +82,8 @@ class ContactWalk {
 bool within(const TimeInterval& t, double tmax) { return t.lo == t.hi ? t.lo <= tmax : t.hi <= tmax; }
 
 template <class Query>
-StageResult walk(const Query& q, double tmax, bool want_toi) {
+StageResult walk(const Query& q, const IntervalFrame<Query>& frame, double tmax, bool want_toi) {
   const bool narrow = want_toi || tmax < 1;
-  const CGAL::Protect_FPU_rounding<true> upward;
-  const IntervalFrame<Query> frame(q);
   ContactWalk<Query> w(q, frame);
   using Isolation = BernsteinIsolation<5>;
   const Isolation::Coefficients b = Isolation::of(frame.volume().p);
@@ -111,7 +109,13 @@ StageResult walk(const Query& q, double tmax, bool want_toi) {
 
 }  // namespace
 
-StageResult contact_walk(const RigidVertexFaceQuery& q, double tmax, bool want_toi) { return walk(q, tmax, want_toi); }
-StageResult contact_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_toi) { return walk(q, tmax, want_toi); }
+StageResult contact_walk(const RigidVertexFaceQuery& q, const IntervalFrame<RigidVertexFaceQuery>& frame, double tmax,
+                         bool want_toi) {
+  return walk(q, frame, tmax, want_toi);
+}
+StageResult contact_walk(const RigidEdgeEdgeQuery& q, const IntervalFrame<RigidEdgeEdgeQuery>& frame, double tmax,
+                         bool want_toi) {
+  return walk(q, frame, tmax, want_toi);
+}
 
 }  // namespace exactccd::rigid

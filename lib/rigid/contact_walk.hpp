@@ -18,15 +18,18 @@
 #pragma once
 
 #include "exactccd/rigid.hpp"
+#include "rigid/interval_frame.hpp"
 #include "rigid/stage_result.hpp"
 
 namespace exactccd::rigid {
 
-/// The stage on a normalized query for [0, tmax]. Needs round-to-nearest on entry (it installs
-/// upward rounding itself). Without want_toi and with tmax = 1, a collision's TOI is any
-/// enclosure of the earliest time.
-StageResult contact_walk(const RigidVertexFaceQuery& normalized_query, double tmax, bool want_toi);
-/// See contact_walk(const RigidVertexFaceQuery&, double, bool).
-StageResult contact_walk(const RigidEdgeEdgeQuery& normalized_query, double tmax, bool want_toi);
+/// The stage on a normalized query for [0, tmax], with its interval frame (built on the same
+/// query). Needs upward rounding (CGAL::Protect_FPU_rounding<true>) held by the caller. Without
+/// want_toi and with tmax = 1, a collision's TOI is any enclosure of the earliest time.
+StageResult contact_walk(const RigidVertexFaceQuery& normalized_query, const IntervalFrame<RigidVertexFaceQuery>& frame,
+                         double tmax, bool want_toi);
+/// See contact_walk(const RigidVertexFaceQuery&, const IntervalFrame<RigidVertexFaceQuery>&, double, bool).
+StageResult contact_walk(const RigidEdgeEdgeQuery& normalized_query, const IntervalFrame<RigidEdgeEdgeQuery>& frame,
+                         double tmax, bool want_toi);
 
 }  // namespace exactccd::rigid

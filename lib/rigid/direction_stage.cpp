@@ -47,27 +47,41 @@ double cosine_of_half_angle(const Quaternion& a, const Quaternion& b) {
   return dot / std::sqrt(na * nb);
 }
 
+}  // namespace
+
 template <class Query>
-bool separated(const Query& q, double d) {
-  using Kind = kind_of<Query>;
-  constexpr int first = Kind::first_points;
+DirectionFrame<Query>::DirectionFrame(const Query& q) {
+  constexpr int first = kind_of<Query>::first_points;
   const auto points = body_points(q);
   const Rotation ra[2] = {Rotation(q.a_t0.q), Rotation(q.a_t1.q)}, rb[2] = {Rotation(q.b_t0.q), Rotation(q.b_t1.q)};
-  // Rotated points r[t][i] (t = 0, 1), translations relative to A's c(0).
-  std::array<std::array<Vec3, 4>, 2> r;
   for (int t = 0; t < 2; ++t)
-    for (int i = 0; i < 4; ++i) r[t][i] = (i < first ? ra[t] : rb[t])(points[i]);
-  const Vec3 o = q.a_t0.c;
-  const std::array<Vec3, 2> ta{Vec3{0, 0, 0}, q.a_t1.c - o}, tb{q.b_t0.c - o, q.b_t1.c - o};
-  double extent_a = 0, extent_b = 0, y = 0;
-  for (int i = 0; i < 4; ++i) (i < first ? extent_a : extent_b) = std::max(i < first ? extent_a : extent_b, largest(points[i]));
+    for (int i = 0; i < 4; ++i) rotated_[t][i] = (i < first ? ra[t] : rb[t])(points[i]);
+  const Vec3 o = q.a_t0.c;  // translations relative to A's c(0)
+  translation_a_ = {Vec3{0, 0, 0}, q.a_t1.c - o};
+  translation_b_ = {q.b_t0.c - o, q.b_t1.c - o};
+  for (int i = 0; i < 4; ++i) extent_[i] = largest(points[i]);
   for (int t = 0; t < 2; ++t) {
-    y = std::max(y, std::max(largest(ta[t]), largest(tb[t])));
-    for (int i = 0; i < 4; ++i) y = std::max(y, largest(r[t][i]));
+    extent_y_ = std::max(extent_y_, std::max(largest(translation_a_[t]), largest(translation_b_[t])));
+    for (int i = 0; i < 4; ++i) extent_y_ = std::max(extent_y_, largest(rotated_[t][i]));
   }
+  cosine_a_ = cosine_of_half_angle(q.a_t0.q, q.a_t1.q);
+  cosine_b_ = cosine_of_half_angle(q.b_t0.q, q.b_t1.q);
+}
+
+template <class Query>
+bool DirectionFrame<Query>::separated(double d, unsigned used, const kinds::Feature* features,
+                                      std::size_t feature_count) const {
+  using Kind = kind_of<Query>;
+  constexpr int first = Kind::first_points;
+  const auto& r = rotated_;
+  const auto& ta = translation_a_;
+  const auto& tb = translation_b_;
+  const double y = extent_y_;
   if (!std::isfinite(y)) return false;
-  const double sa = sagitta_bound(extent_a, cosine_of_half_angle(q.a_t0.q, q.a_t1.q));
-  const double sb = sagitta_bound(extent_b, cosine_of_half_angle(q.b_t0.q, q.b_t1.q));
+  double extent_a = 0, extent_b = 0;
+  for (int i = 0; i < 4; ++i)
+    if (used >> i & 1) (i < first ? extent_a : extent_b) = std::max(i < first ? extent_a : extent_b, extent_[i]);
+  const double sa = sagitta_bound(extent_a, cosine_a_), sb = sagitta_bound(extent_b, cosine_b_);
   const double distance = (d + sa) + sb, slack = y * 0x1p-41;
   // Certifies the gap along n, normalised by its largest component (header, steps 5 and 6).
   const auto certifies = [&](const Vec3& n) {
@@ -78,6 +92,7 @@ bool separated(const Query& q, double d) {
     double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
     for (int t = 0; t < 2; ++t)
       for (int i = 0; i < 4; ++i) {
+        if (!(used >> i & 1)) continue;
         const double p = project(r[t][i]);
         if (i < first)
           a_lo = std::min(a_lo, p), a_hi = std::max(a_hi, p);
@@ -99,7 +114,8 @@ bool separated(const Query& q, double d) {
       const Vec3& c = i < first ? ta[t] : tb[t];
       x[i] = {c.x + r[t][i].x, c.y + r[t][i].y, c.z + r[t][i].z};
     }
-    for (const kinds::Feature& f : Kind::features) {
+    for (std::size_t k = 0; k < feature_count; ++k) {
+      const kinds::Feature& f = features[k];
       const auto p = [&](int j) { return x[static_cast<std::size_t>(f.points[j])]; };
       Vec3 n{};
       switch (f.pair) {
@@ -122,9 +138,31 @@ bool separated(const Query& q, double d) {
   return false;
 }
 
+namespace {
+
+/// The points of feature f's two parts (each on one body).
+unsigned points_of(const kinds::Feature& f) {
+  const int count = f.pair == kinds::FeaturePair::point_point ? 2 : f.pair == kinds::FeaturePair::point_edge ? 3 : 4;
+  unsigned used = 0;
+  for (int k = 0; k < count; ++k) used |= 1u << f.points[k];
+  return used;
+}
+
 }  // namespace
 
-bool separated_beyond(const RigidVertexFaceQuery& q, double d) { return separated(q, d); }
-bool separated_beyond(const RigidEdgeEdgeQuery& q, double d) { return separated(q, d); }
+template <class Query>
+bool DirectionFrame<Query>::separated_beyond(double d) const {
+  using Kind = kind_of<Query>;
+  return separated(d, 0xFu, Kind::features.data(), Kind::features.size());
+}
+
+template <class Query>
+bool DirectionFrame<Query>::feature_separated(double d, std::size_t feature) const {
+  const kinds::Feature& f = kind_of<Query>::features[feature];
+  return separated(d, points_of(f), &f, 1);
+}
+
+template class DirectionFrame<RigidVertexFaceQuery>;
+template class DirectionFrame<RigidEdgeEdgeQuery>;
 
 }  // namespace exactccd::rigid

@@ -48,14 +48,43 @@
 // primitives' own pair first, then at t = 1, then the coordinate axes.
 #pragma once
 
+#include <array>
+#include <cstddef>
+
 #include "exactccd/rigid.hpp"
+#include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::rigid {
 
-/// True when a direction certifies that the primitives of the normalized query (normalized.hpp)
-/// stay farther than d apart over all of [0, 1]; false means only "not certified".
-bool separated_beyond(const RigidVertexFaceQuery& normalized_query, double d);
-/// See separated_beyond(const RigidVertexFaceQuery&, double).
-bool separated_beyond(const RigidEdgeEdgeQuery& normalized_query, double d);
+/// The direction stage's view of a normalized query (normalized.hpp): the body points rotated at
+/// t = 0 and 1, the translations relative to A's c(0), the sagitta terms (header, steps 1-4).
+template <class Query>
+class DirectionFrame {
+ public:
+  /// Computes the rotated points, translations and arcs of the normalized query.
+  explicit DirectionFrame(const Query& normalized_query);
+
+  /// True when a direction certifies that the primitives stay farther than d apart over all of
+  /// [0, 1]; false means only "not certified".
+  bool separated_beyond(double d) const;
+
+  /// True when a direction certifies that the two parts of the kind's feature pair number
+  /// `feature` (kinds::VertexFace::features or EdgeEdge's: each part on one body) stay farther
+  /// than d apart over [0, 1] (the same argument restricted to those points): then the pair's
+  /// term holds nowhere (it implies a point of each part within d, docs/design.md 4b.1).
+  bool feature_separated(double d, std::size_t feature) const;
+
+ private:
+  bool separated(double d, unsigned used, const kinds::Feature* features, std::size_t feature_count) const;
+
+  std::array<std::array<Vec3, 4>, 2> rotated_;   // R(q(t)) p for t = 0, 1
+  std::array<Vec3, 2> translation_a_, translation_b_;
+  std::array<double, 4> extent_;                 // |p|_inf of each body point
+  double extent_y_ = 0;                          // Y of step 5
+  double cosine_a_ = 0, cosine_b_ = 0;           // fl(cos(Phi / 2)) of each body
+};
+
+extern template class DirectionFrame<RigidVertexFaceQuery>;
+extern template class DirectionFrame<RigidEdgeEdgeQuery>;
 
 }  // namespace exactccd::rigid

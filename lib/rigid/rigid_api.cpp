@@ -23,7 +23,7 @@ template <class Query>
 std::optional<TimeInterval> answer(const Query& q, const CcdParams& params, Method method, bool want_toi,
                                    StageCounters* counters) {
   const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  rigid::validate(q, params, function_name<Query>(want_toi));
+  rigid::validate(q, params, [&] { return function_name<Query>(want_toi); });
   switch (method) {
     case Method::filtered:
       return rigid::filtered(q, params, want_toi, counters);

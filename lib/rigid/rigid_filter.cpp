@@ -37,25 +37,30 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& params, bool
   if (const auto scaled = normalized(q, params.min_distance)) {
     const Query& nq = scaled->first;
     const double d = scaled->second;
-    if (separated_beyond(nq, d)) {
+    const DirectionFrame<Query> directions(nq);
+    if (directions.separated_beyond(d)) {
       count(counters, &StageCounters::separating_direction);
       return std::nullopt;
     }
-    if (params.min_distance == 0) {
-      const StageResult r = contact_walk(nq, params.tmax, want_toi);
-      if (r.decided()) return take(r, counters);
-    } else {
-      bool probe_used_gmp = false;
-      if (!want_toi) {  // touching in [0, tmax] is being within d; its time bounds the earliest
-        const StageResult touch = contact_walk(nq, params.tmax, false);
-        if (touch.answer == StageResult::Answer::collides)
-          return take(StageResult::collides({0.0, touch.toi->hi}, touch.used_gmp), counters);
-        probe_used_gmp = touch.used_gmp;
+    StageResult r;
+    {
+      const CGAL::Protect_FPU_rounding<true> upward;  // the interval stages (they switch back where they need)
+      const IntervalFrame<Query> frame(nq);
+      if (params.min_distance == 0) {
+        r = contact_walk(nq, frame, params.tmax, want_toi);
+      } else {
+        bool probe_used_gmp = false;
+        if (!want_toi) {  // touching in [0, tmax] is being within d; its time bounds the earliest
+          const StageResult touch = contact_walk(nq, frame, params.tmax, false);
+          if (touch.answer == StageResult::Answer::collides)
+            r = StageResult::collides({0.0, touch.toi->hi}, touch.used_gmp);
+          probe_used_gmp = touch.used_gmp;
+        }
+        if (!r.decided()) r = separation_walk(nq, directions, frame, d, params.tmax, want_toi);
+        r.used_gmp = r.used_gmp || probe_used_gmp;
       }
-      StageResult r = separation_walk(nq, d, params.tmax, want_toi);
-      r.used_gmp = r.used_gmp || probe_used_gmp;
-      if (r.decided()) return take(r, counters);
     }
+    if (r.decided()) return take(r, counters);
   }
   count(counters, &StageCounters::exact);
   return exact_toi(to_rational(q), RationalCcdParams{params.min_distance, params.tmax});

@@ -19,12 +19,12 @@ bool quaternion_path_vanishes(const Quaternion& q0, const Quaternion& q1);
 /// pose, or a quaternion path that vanishes in [0, 1].
 const char* invalid_motion(const RigidPose& t0, const RigidPose& t1);
 
-/// Throws std::invalid_argument, the message starting with `function`, when a number of the
-/// query is not finite, a quaternion path vanishes in [0, 1], d is negative or not finite, or
-/// tmax is not in (0, 1].
-template <class Query>
-void validate(const Query& q, const CcdParams& params, const std::string& function) {
-  const auto fail = [&](const std::string& why) { throw std::invalid_argument(function + ": " + why); };
+/// Throws std::invalid_argument, the message starting with function() (called only then: no
+/// allocation on the common path), when a number of the query is not finite, a quaternion path
+/// vanishes in [0, 1], d is negative or not finite, or tmax is not in (0, 1].
+template <class Query, class Name>
+void validate(const Query& q, const CcdParams& params, Name&& function) {
+  const auto fail = [&](const std::string& why) { throw std::invalid_argument(function() + ": " + why); };
   if (const char* why = invalid_motion(q.a_t0, q.a_t1)) fail(std::string("body A: ") + why);
   if (const char* why = invalid_motion(q.b_t0, q.b_t1)) fail(std::string("body B: ") + why);
   for (const Vec3& p : body_points(q))
