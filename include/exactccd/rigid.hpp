@@ -28,6 +28,7 @@
 #include <optional>
 #include <vector>
 
+#include "exactccd/scene.hpp"
 #include "exactccd/stats.hpp"
 #include "exactccd/types.hpp"
 
@@ -162,5 +163,60 @@ inline std::optional<TimeInterval> toi(const RigidEdgeEdgeQuery& q, const CcdPar
                                        StageCounters& counters) {
   return rigid_edge_edge_toi(q, params, method, counters);
 }
+
+// ---------------------------------------------------------------------------------------
+// Scenes of rigid bodies over one step.
+//
+// Each body is a triangle mesh in body coordinates with its poses at t = 0 and t = 1 (moving as
+// above). Its primitives: the vertices its triangles reference, their unique edges, its
+// triangles. The pairs are between different bodies: a vertex of one body against a triangle
+// of another (vertex-face, in both directions), an edge of one against an edge of a later one
+// (edge-edge); pairs within one body are never tested (a rigid body keeps its shape). Each is
+// decided exactly as rigid_vertex_face_toi / rigid_edge_edge_toi decide it with
+// CcdParams{options.min_distance, options.tmax}, after a broad phase of certified swept boxes
+// (every vertex's box over the step holds its exact curve, grown by d; docs/design.md 9.5),
+// which drops only pairs that cannot come within d. For d > 0 the vertex-face and edge-edge
+// pairs cover the distance between two triangle meshes (the closest points of two closed
+// triangles are a vertex and a face, or two edges).
+// ---------------------------------------------------------------------------------------
+
+/// A rigid body over one step: a triangle mesh in body coordinates and its two poses.
+struct RigidBody {
+  std::vector<Vec3> vertices;                 ///< body coordinates
+  std::vector<std::array<int, 3>> triangles;  ///< three distinct vertex indices each
+  RigidPose t0;                               ///< the pose at t = 0
+  RigidPose t1;                               ///< the pose at t = 1
+};
+
+/// A colliding pair between two bodies and its time of impact.
+struct RigidCollision {
+  CollisionKind kind = CollisionKind::vertex_face;  ///< vertex_face or edge_edge
+  int body_a = -1;  ///< vertex-face: the vertex's body; edge-edge: the first edge's body (body_a < body_b)
+  int body_b = -1;  ///< vertex-face: the triangle's body; edge-edge: the second edge's body
+  int vertex = -1;    ///< vertex-face: the vertex, an index into body_a's vertices
+  int triangle = -1;  ///< vertex-face: the triangle, an index into body_b's triangles
+  std::array<int, 2> edge_a{{-1, -1}};  ///< edge-edge: body_a's edge (ascending vertex indices)
+  std::array<int, 2> edge_b{{-1, -1}};  ///< edge-edge: body_b's edge (ascending vertex indices)
+  TimeInterval toi;  ///< tightest double enclosure of the pair's earliest time within d
+};
+
+/// Throws std::invalid_argument, naming the body and the element, when a body is malformed: a
+/// coordinate or pose component not finite, a triangle index out of range or repeated, or a
+/// quaternion path that vanishes in [0, 1].
+void validate(const std::vector<RigidBody>& bodies);
+
+/// Every colliding pair (vertex-face first, by (body_a, vertex, body_b, triangle); then edge-edge
+/// by (body_a, body_b, edge_a, edge_b)) with its TOI, for CcdParams{options.min_distance,
+/// options.tmax}; on options.threads threads (the result does not depend on them). Throws
+/// std::invalid_argument on a malformed body (validate) or invalid options.
+std::vector<RigidCollision> rigid_find_collisions(const std::vector<RigidBody>& bodies, const SceneOptions& options = {});
+
+/// The earliest time of impact over every pair (the tightest double interval), or nullopt.
+std::optional<TimeInterval> rigid_earliest_toi(const std::vector<RigidBody>& bodies, const SceneOptions& options = {});
+
+/// The largest step s <= tmax over which no pair comes within d: tmax without a collision, else
+/// the largest double below the earliest time of impact's lo (0 for a collision at t = 0), as
+/// max_collision_free_step of scene.hpp.
+double rigid_max_collision_free_step(const std::vector<RigidBody>& bodies, const SceneOptions& options = {});
 
 }  // namespace exactccd
