@@ -29,6 +29,16 @@ of shape (n, 3); candidate rows of vertex indices, or of face / edge indices wit
     candidates_is_collision_free(...) -> bool
     candidates_max_collision_free_step(...) -> float
 
+Rigid bodies (each moving from pose (c0, q0) to (c1, q1); quaternions w x y z of any length)::
+
+    rigid_vertex_face_ccd(q, min_distance=0.0, tmax=1.0, threads=0)  # q: (N, 40) -> (N,) bool
+    rigid_vertex_face_toi(q, ...)                                     # -> (N, 2) [lo, hi]
+    rigid_edge_edge_ccd / rigid_edge_edge_toi                         # (N, 40)
+    rigid_find_collisions(bodies, min_distance=0.0, tmax=1.0, threads=0) -> dict
+    rigid_earliest_toi(bodies, ...) -> (lo, hi) or None
+    rigid_max_collision_free_step(bodies, ...) -> float
+    # bodies: a sequence of (V, F, c0, q0, c1, q1)
+
 Every answer is exact; a time of impact is the tightest double interval [lo, hi] holding the exact
 time. Bad input (shape, dtype, NaN or infinite coordinates, bad min_distance or tmax) raises
 ValueError with the library's message.
@@ -62,6 +72,13 @@ from ._exactccd import (  # noqa: F401
     point_point_ccd,
     point_point_toi,
     read_mesh,
+    rigid_earliest_toi,
+    rigid_edge_edge_ccd,
+    rigid_edge_edge_toi,
+    rigid_find_collisions,
+    rigid_max_collision_free_step,
+    rigid_vertex_face_ccd,
+    rigid_vertex_face_toi,
     vertex_face_ccd,
     vertex_face_toi,
 )

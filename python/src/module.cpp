@@ -35,6 +35,10 @@
 namespace py = pybind11;
 
 namespace exactccd::python {
+
+/// The rigid motion model's functions (rigid_module.cpp).
+void define_rigid(py::module_& m);
+
 namespace {
 
 /// A C-contiguous float64 array.
@@ -580,6 +584,7 @@ PYBIND11_MODULE(_exactccd, m) {
   });
 
   kinds::for_each_separation_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
+  define_rigid(m);
 
   m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);
   m.attr("EDGE_EDGE") = static_cast<int>(CollisionKind::edge_edge);
