@@ -8,9 +8,11 @@
 // t = sqrt(2) - 1 for (1, 1)/sqrt(2).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
 
+#include "exactccd/exactccd.h"
 #include "exactccd/rigid.hpp"
 #include "rigid/exact_rigid.hpp"
 #include "rigid_support.hpp"
@@ -282,6 +284,38 @@ TEST(RigidExact, DegreesOfTheReducedPolynomials) {
     EXPECT_EQ(b.in_plane, 9);
     EXPECT_EQ(b.term, 10);
   }
+}
+
+}  // namespace
+}  // namespace exactccd
+
+namespace exactccd {
+namespace {
+
+TEST(RigidCApi, StatusesAndAnswers) {
+  // The vertex turning into the triangle towards (3, 4): TOI 1/2 (VertexTurningIntoATriangle).
+  double q[EXACTCCD_RIGID_QUERY_SIZE] = {0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0,
+                                          0, 0, 0, 0, 1, 0, 0, 0, 5, 0, 0, 0, 0, -1, 6, 8, 0, 0, 0, 1};
+  int collides = -1;
+  double lo = -1, hi = -1;
+  EXPECT_EQ(exactccd_rigid_toi(EXACTCCD_VERTEX_FACE, q, 0, 1, &collides, &lo, &hi), EXACTCCD_OK);
+  EXPECT_EQ(collides, 1);
+  EXPECT_EQ(lo, 0.5);
+  EXPECT_EQ(hi, 0.5);
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_VERTEX_FACE, q, 0, 0.25, &collides), EXACTCCD_OK);
+  EXPECT_EQ(collides, 0);
+  EXPECT_EQ(exactccd_rigid_toi(EXACTCCD_VERTEX_FACE, q, 0, 1, &collides, nullptr, nullptr), EXACTCCD_OK);
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_VERTEX_FACE, nullptr, 0, 1, &collides), EXACTCCD_ERROR_NULL);
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_VERTEX_FACE, q, 0, 1, nullptr), EXACTCCD_ERROR_NULL);
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_POINT_EDGE, q, 0, 1, &collides), EXACTCCD_ERROR_PARAMETER);
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_VERTEX_FACE, q, -1, 1, &collides), EXACTCCD_ERROR_PARAMETER);
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_VERTEX_FACE, q, 0, 0, &collides), EXACTCCD_ERROR_PARAMETER);
+  q[12] = std::nan("");
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_EDGE_EDGE, q, 0, 1, &collides), EXACTCCD_ERROR_NON_FINITE);
+  q[12] = 0;
+  q[10] = -2, q[13] = 0;  // qA1 = (-2, 0, 0, 0) = -2 qA0
+  EXPECT_EQ(exactccd_rigid_ccd(EXACTCCD_VERTEX_FACE, q, 0, 1, &collides), EXACTCCD_ERROR_ROTATION);
+  EXPECT_STREQ(exactccd_status_string(EXACTCCD_ERROR_ROTATION), "a rigid body's quaternion path passes through zero");
 }
 
 }  // namespace

@@ -73,7 +73,7 @@ int generate_rigid(std::uint64_t seed, std::size_t max_queries, unsigned threads
   const std::vector<std::string> family_note{
       "Degenerate rigid families (fuzz/rigid_families.hpp) at k = unperturbed, 0, 4, ..., 52, both directions,",
       "placed by exact common changes of frame; truth by construction, checked against Method::exact.",
-      "Regenerate: exactccd generate rigid --seed " + std::to_string(seed) + " --out DIR"};
+      "Regenerate: exactccd generate rigid --seed " + std::to_string(seed) + " --max-queries " + std::to_string(max_queries) + " --out DIR"};
   write(fs::path(out) / "rigid-families-vertex-face.csv", families_of[0], family_note);
   write(fs::path(out) / "rigid-families-edge-edge.csv", families_of[1], family_note);
   // The tumbling bodies: every step's candidates answered by Method::exact.
@@ -97,7 +97,7 @@ int generate_rigid(std::uint64_t seed, std::size_t max_queries, unsigned threads
               std::to_string(scene.poses.size() - 1) + " steps from certified swept boxes: " + std::to_string(all) +
               " candidates, " + std::to_string(positives) + " collide (truth: Method::exact);",
           "kept: every colliding one, then evenly spaced others, at most " + std::to_string(max_queries) + ".",
-          "Regenerate: exactccd generate rigid --seed " + std::to_string(seed) + " --out DIR"};
+          "Regenerate: exactccd generate rigid --seed " + std::to_string(seed) + " --max-queries " + std::to_string(max_queries) + " --out DIR"};
     };
     write(fs::path(out) / ("rigid-sim-" + scene.name + "-vertex-face.csv"), qvf, note(vf.size(), pvf));
     write(fs::path(out) / ("rigid-sim-" + scene.name + "-edge-edge.csv"), qee, note(ee.size(), pee));
