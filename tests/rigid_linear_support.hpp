@@ -9,7 +9,9 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>

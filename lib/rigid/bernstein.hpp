@@ -54,6 +54,9 @@ class BernsteinIsolation {
   using I = CGAL::Interval_nt<false>;
   using Coefficients = std::array<I, D + 1>;
   static constexpr int kMaxDepth = 40;
+  /// The most cells examined by one isolation: a polynomial within rounding of zero over a long
+  /// stretch would otherwise split every cell down to the depth limit (2^40 cells).
+  static constexpr int kMaxCells = 4096;
 
   /// The coefficients of p on [0, 1] times L.
   static Coefficients of(const contact::Poly<I, D>& p) {
@@ -67,10 +70,18 @@ class BernsteinIsolation {
   }
 
   /// Appends the roots in (lo, hi), and exact zeros at inner dyadic points, in increasing
-  /// order; false when a cell cannot be settled at the depth limit. `first` / `last`: the
-  /// signs at lo / hi when known from elsewhere (else unknown).
+  /// order; false when a cell cannot be settled at the depth limit, or after kMaxCells cells.
+  /// `first` / `last`: the signs at lo / hi when known from elsewhere (else unknown).
   static bool isolate(const Coefficients& b, double lo, double hi, int depth, boost::container::small_vector<RootCell, 8>& out,
                       SignClass first, SignClass last) {
+    int budget = kMaxCells;
+    return isolate(b, lo, hi, depth, out, first, last, budget);
+  }
+
+ private:
+  static bool isolate(const Coefficients& b, double lo, double hi, int depth, boost::container::small_vector<RootCell, 8>& out,
+                      SignClass first, SignClass last, int& budget) {
+    if (--budget < 0) return false;
     std::array<SignClass, D + 1> s;
     bool certain = true, all_zero = true;
     for (int i = 0; i <= D; ++i) {
@@ -105,9 +116,9 @@ class BernsteinIsolation {
       right[D - level] = work[D - level];
     }
     const double mid = lo + (hi - lo) / 2;  // exact: dyadic cells
-    if (!isolate(left, lo, mid, depth + 1, out, s[0], SignClass::unknown)) return false;
+    if (!isolate(left, lo, mid, depth + 1, out, s[0], SignClass::unknown, budget)) return false;
     if (classify(left[D]) == SignClass::zero) out.push_back(RootCell{mid, mid, 0});
-    return isolate(right, mid, hi, depth + 1, out, SignClass::unknown, s[D]);
+    return isolate(right, mid, hi, depth + 1, out, SignClass::unknown, s[D], budget);
   }
 };
 

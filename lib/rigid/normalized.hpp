@@ -54,7 +54,9 @@ std::optional<std::pair<Query, double>> normalized(const Query& query, double d)
     for (Quaternion* r : {&t0->q, &t1->q})
       *r = {scaled(r->w, unit), scaled(r->x, unit), scaled(r->y, unit), scaled(r->z, unit)};
   }
-  if (!exact) return std::nullopt;
+  // A d that overflowed when scaled up is left to the exact path too (no filter would certify
+  // anything with it, and none may meet a non-finite number in GMP).
+  if (!exact || !std::isfinite(scaled_d)) return std::nullopt;
   return std::pair{q, scaled_d};
 }
 

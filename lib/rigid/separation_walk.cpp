@@ -9,7 +9,7 @@
 // A term is excluded on a cell when its f is certainly > 0 or one of its g certainly <= 0 there.
 //  1. t = 0: a term certainly holding gives TOI [0, 0]; unless every term certainly fails, the
 //     query is undecided.
-//  2. The cells of [0, tmax] in time order (halved down to depth 40), each term excluded on a
+//  2. The cells of [0, tmax] in time order (halved down to depth 40, at most 2048 cells), each term excluded on a
 //     cell not examined again in its halves. In the first cell where one term is left, with its
 //     g certainly positive over the cell, f certainly > 0 at the cell's start and < 0 at its end,
 //     and f' of certain sign over the cell, f has exactly one root t*, where the term holds, every
@@ -69,6 +69,9 @@ class SeparationWalk {
  public:
   using Kind = kind_of<Query>;
   static constexpr int kMaxDepth = 40;
+  /// The most cells one walk examines: a term within rounding of holding over a long stretch
+  /// (a distance staying near d) would otherwise split every cell down to the depth limit.
+  static constexpr int kMaxCells = 2048;
 
   SeparationWalk(const Query& q, const DirectionFrame<Query>& directions, const IntervalFrame<Query>& frame, double d,
                  double tmax, bool want_toi)
@@ -102,7 +105,9 @@ class SeparationWalk {
     std::array<Cell, kMaxDepth + 2> stack;
     int top = 0;
     stack[top++] = {0.0, tmax_, 0, all};
+    int cells = 0;
     while (top > 0) {
+      if (++cells > kMaxCells) return StageResult::undecided(used_gmp_);
       const Cell cell = stack[--top];
       const double m = cell.a + (cell.b - cell.a) / 2;
       const auto mid = terms_at(m, cell.open);

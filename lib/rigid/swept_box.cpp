@@ -1,6 +1,8 @@
 #include "rigid/swept_box.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "rigid/quaternion.hpp"
 
@@ -9,9 +11,15 @@ namespace {
 
 using I = SweptBody::I;
 
+/// q times the power of two first * second (two normal doubles), enclosed (R(s q) = R(q); near
+/// 1, no square of it overflows or vanishes).
+QuaternionT<I> scaled(const Quaternion& q, const std::array<double, 2>& factor) {
+  const auto s = [&](double v) { return (I(v) * I(factor[0])) * I(factor[1]); };
+  return {s(q.w), s(q.x), s(q.y), s(q.z)};
+}
+
 /// R(q) = M(q) / |q|^2 in intervals, row-major (column k is M(q) e_k / |q|^2).
-std::array<I, 9> rotation(const Quaternion& q) {
-  const QuaternionT<I> qi{I(q.w), I(q.x), I(q.y), I(q.z)};
+std::array<I, 9> rotation(const QuaternionT<I>& qi) {
   const I n2 = squared_norm(qi);
   std::array<I, 9> r;
   for (int k = 0; k < 3; ++k) {
@@ -27,10 +35,16 @@ I hull(const I& a, const I& b) { return I(std::min(a.inf(), b.inf()), std::max(a
 }  // namespace
 
 SweptBody::SweptBody(const RigidPose& t0, const RigidPose& t1) {
-  rotation_ = {rotation(t0.q), rotation(t1.q)};
+  double largest = 0;
+  for (const Quaternion* q : {&t0.q, &t1.q})
+    largest = std::max({largest, std::fabs(q->w), std::fabs(q->x), std::fabs(q->y), std::fabs(q->z)});
+  // 2^-e with largest 2^-e in [1, 2), as two normal double factors (|e| <= 1074).
+  const int e = std::ilogb(largest);
+  const std::array<double, 2> factor{std::ldexp(1.0, -e / 2), std::ldexp(1.0, -(e - e / 2))};
+  const QuaternionT<I> a = scaled(t0.q, factor), b = scaled(t1.q, factor);
+  rotation_ = {rotation(a), rotation(b)};
   const double c0[3] = {t0.c.x, t0.c.y, t0.c.z}, c1[3] = {t1.c.x, t1.c.y, t1.c.z};
   for (int k = 0; k < 3; ++k) c_lo_[k] = I(std::min(c0[k], c1[k])), c_hi_[k] = I(std::max(c0[k], c1[k]));
-  const QuaternionT<I> a{I(t0.q.w), I(t0.q.x), I(t0.q.y), I(t0.q.z)}, b{I(t1.q.w), I(t1.q.x), I(t1.q.y), I(t1.q.z)};
   const I dot = a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
   short_arc_ = dot.inf() > 0;
   if (short_arc_) one_minus_cos_ = I(1) - dot / CGAL::sqrt(squared_norm(a) * squared_norm(b));
@@ -50,6 +64,10 @@ Box SweptBody::box(const Vec3& p, double margin) const {
                 std::min((I(chord.sup()) + sagitta).sup(), length.sup()));
     const I lo_k = c_lo_[k] + arc - I(margin), hi_k = c_hi_[k] + arc + I(margin);
     lo[k] = lo_k.inf(), hi[k] = hi_k.sup();
+    // An overflow may leave a NaN bound (0 times infinity): the whole line then, which holds
+    // every curve.
+    if (std::isnan(lo[k])) lo[k] = -std::numeric_limits<double>::infinity();
+    if (std::isnan(hi[k])) hi[k] = std::numeric_limits<double>::infinity();
   }
   return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
