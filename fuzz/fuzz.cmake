@@ -21,23 +21,27 @@ exactccd_add_plugin(naive_plugin fuzz/plugins/naive_plugin.cpp)
 exactccd_add_plugin(naive_tolerance_plugin fuzz/plugins/naive_tolerance_plugin.cpp)
 
 if(EXACTCCD_BUILD_TESTS)
-  exactccd_add_plugin(plugin_vf_only tests/plugin_vf_only.cpp)
+  exactccd_add_plugin(plugin_vf_only tests/cli/plugin_vf_only.cpp)
   add_test(NAME cli.fuzz_against
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:exactccd_cli> -DNAIVE=$<TARGET_FILE:naive_plugin>
             -DVF_ONLY=$<TARGET_FILE:plugin_vf_only> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/fuzz-against-test
-            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli_fuzz_against.cmake)
-  # Sharded runs merged (tests/cli_merge.cmake), and the Slurm recipe of tools/cluster/ on a
-  # one-node cluster the test starts itself (tests/cluster_slurm.sh; skipped without slurm-wlm
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli/cli_fuzz_against.cmake)
+  # Sharded runs merged (tests/cli/cli_merge.cmake), and the Slurm recipe of tools/cluster/ on a
+  # one-node cluster the test starts itself (tests/cli/cluster_slurm.sh; skipped without slurm-wlm
   # and munge, or when not root).
   add_test(NAME cli.merge
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:exactccd_cli> -DPLUGIN=$<TARGET_FILE:naive_plugin>
             -DDATA=${CMAKE_CURRENT_SOURCE_DIR}/data/sim -DWORK=${CMAKE_CURRENT_BINARY_DIR}/cli-tests/merge
-            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli_merge.cmake)
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli/cli_merge.cmake)
   add_test(NAME cli.cluster_slurm
-    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/tests/cluster_slurm.sh $<TARGET_FILE:exactccd_cli>
+    COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli/cluster_slurm.sh $<TARGET_FILE:exactccd_cli>
             $<TARGET_FILE:naive_plugin> ${CMAKE_CURRENT_SOURCE_DIR}/data/sim
             ${CMAKE_CURRENT_SOURCE_DIR}/tools/cluster ${CMAKE_CURRENT_BINARY_DIR}/cli-tests/cluster_slurm)
   set_tests_properties(cli.cluster_slurm PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
+  # The slowest CLI runs (fuzz-against with shrinking: over 3 minutes under ASan with the wide
+  # families, whose plug-in loading and shrinking then do not run under the sanitizers; the
+  # Slurm cluster, 35 s in Release); sharded merging likewise left to the Release pass.
+  set_tests_properties(cli.cluster_slurm cli.fuzz_against cli.merge PROPERTIES LABELS sanitizer-skip)
   # The committed seed corpus holds what the generator writes now.
   add_executable(make_seed_corpus fuzz/make_seed_corpus.cpp)
   target_compile_options(make_seed_corpus PRIVATE ${EXACTCCD_WARNINGS})
@@ -45,7 +49,7 @@ if(EXACTCCD_BUILD_TESTS)
   add_test(NAME fuzz.seed_corpus_fresh
     COMMAND ${CMAKE_COMMAND} -DGENERATOR=$<TARGET_FILE:make_seed_corpus>
             -DCORPUS=${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus -DWORK=${CMAKE_CURRENT_BINARY_DIR}/seed-corpus-check
-            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/fuzz_corpus_fresh.cmake)
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli/fuzz_corpus_fresh.cmake)
 endif()
 
 if(EXACTCCD_BUILD_FUZZERS)

@@ -6,6 +6,7 @@ packages=(
   build-essential cmake pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
   libgtest-dev libbenchmark-dev libeigen3-dev doxygen
+  libtbb-dev
   python3-matplotlib
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis
   clang libclang-rt-dev

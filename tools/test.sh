@@ -27,26 +27,10 @@ if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
         -DEXACTCCD_SANITIZE=ON -DEXACTCCD_NATIVE=ON -DEXACTCCD_BUILD_BENCHMARKS=OFF -DEXACTCCD_WERROR=ON
   cmake --build build-asan -j"$jobs"
-  # The package test installs and builds a consumer without sanitizers: covered above. The two
-  # longest CLI runs (fuzz-against with shrinking, generate/check on the wide families: over 3
-  # minutes together under ASan) run in the Release pass only, to keep CI under 30 minutes;
-  # fuzz-against's plug-in loading and shrinking are then not run under the sanitizers. Likewise
-  # the two longest minimum-separation property runs (near queries checked with CGAL's
-  # constructions, every bundled file at four distances: about 110 s under ASan); the separation
-  # code runs under the sanitizers in test_min_separation, the catalogue and the other
-  # MinSeparationCgal tests. Also left to the Release pass (about 2 minutes under ASan
-  # together): regenerating data/sim (cli.sim_fresh), the largest filtered-equals-exact sweep
-  # over every kind (the others run here), and the two largest broad-phase comparisons with
-  # brute force (the broad phase runs here in the other scene and broad-phase tests). And, from
-  # the per-test times of a full sanitizer run (1228 s of test time on 2 cores): the environment
-  # tests run here in two of their six environments (ftz_daz_upward and traps; the library
-  # installs its default environment first, so the other four run the same code: about 270 s
-  # under ASan), the four largest degenerate families of the wide-exponent sweep (about 200 s;
-  # the others run here), the CLI's option-value table (27 s, parsing only) and the random
-  # queries of the CGAL distance oracle (23 s; its grid and constructed cases run here).
+  # The tests labelled sanitizer-skip (tests/CMakeLists.txt says which and why: long runs of
+  # code the other tests run here too) are left to the Release pass, to keep CI under 30 minutes.
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --test-dir build-asan --output-on-failure -j"$jobs" \
-      -E '^(package\.|cli\.(fuzz_against|families_wide|merge|cluster_slurm|sim_fresh|option_values)$|MinSeparationCgal\.(NearQueries|RandomQueries)$|MinSeparationData\.|MinSeparation\.FilteredEqualsExactForEveryKind$|SceneBroadPhase\.RefitGivesTheCandidatesOfARebuild$|BroadPhase\.RandomAndDegenerateScenesMatchSweepAndBruteForce$|FpEnvironment/EveryEnvironment\.(Queries|SeparationQueries)GiveDefaultAnswersAndLeaveTheEnvironment/(upward|downward|towardzero|ftz_daz)( |$)|Families/WideFamilyTest\.EveryExactMethodGivesTheConstructedAnswerAndToi/(ee_coplanar_sliding|ee_zero_length_edge|ee_parallel|vf_degenerate_triangle)( |$))'
+    ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE sanitizer-skip
 fi
 
 if [ "${EXACTCCD_SKIP_FUZZERS:-0}" != "1" ]; then

@@ -7,7 +7,7 @@
 #include <exception>
 
 #include "exactccd/exactccd.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace exactccd::plugins {
 

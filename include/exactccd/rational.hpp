@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 
 #include <optional>
+#include <type_traits>
 
 #include "exactccd/ccd.hpp"
 #include "exactccd/types.hpp"
@@ -15,27 +16,6 @@ namespace exactccd {
 using RationalVec3 = Vec3T<mpq_class>;                       ///< exact rational coordinates
 using RationalVertexFaceQuery = VertexFaceQueryT<mpq_class>;  ///< a vertex-face query in rationals
 using RationalEdgeEdgeQuery = EdgeEdgeQueryT<mpq_class>;      ///< an edge-edge query in rationals
-
-/// Exact vertex-face CCD for rational coordinates.
-bool vertex_face_ccd(const RationalVertexFaceQuery& q);
-
-/// Exact edge-edge CCD for rational coordinates.
-bool edge_edge_ccd(const RationalEdgeEdgeQuery& q);
-
-/// Earliest time of impact of a vertex-face query with rational coordinates.
-std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q);
-
-/// Earliest time of impact of an edge-edge query with rational coordinates.
-std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q);
-
-/// The exact answer for a rational query of either kind; see vertex_face_ccd(const RationalVertexFaceQuery&).
-inline bool ccd(const RationalVertexFaceQuery& q) { return vertex_face_ccd(q); }
-/// See ccd(const RationalVertexFaceQuery&).
-inline bool ccd(const RationalEdgeEdgeQuery& q) { return edge_edge_ccd(q); }
-/// The exact TOI for a rational query of either kind.
-inline std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q) { return vertex_face_toi(q); }
-/// See toi(const RationalVertexFaceQuery&).
-inline std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q) { return edge_edge_toi(q); }
 
 using RationalPointEdgeQuery = PointEdgeQueryT<mpq_class>;      ///< point-edge in rationals
 using RationalPointPointQuery = PointPointQueryT<mpq_class>;    ///< point-point in rationals
@@ -50,35 +30,37 @@ struct RationalCcdParams {
   mpq_class tmax = 1;          ///< in (0, 1]
 };
 
-/// Exact minimum-separation CCD for rational coordinates, every kind (see ccd.hpp's
-/// CcdParams functions). Throws std::invalid_argument on a negative d or a tmax outside (0, 1].
-bool ccd(const RationalVertexFaceQuery& q, const RationalCcdParams& params);
-/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
-bool ccd(const RationalEdgeEdgeQuery& q, const RationalCcdParams& params);
-/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
-bool ccd(const RationalPointEdgeQuery& q, const RationalCcdParams& params);
-/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
-bool ccd(const RationalPointPointQuery& q, const RationalCcdParams& params);
-/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
-bool ccd(const RationalEdgeEdge2dQuery& q, const RationalCcdParams& params);
-/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
-bool ccd(const RationalPointEdge2dQuery& q, const RationalCcdParams& params);
-/// See ccd(const RationalVertexFaceQuery&, const RationalCcdParams&).
-bool ccd(const RationalPointPoint2dQuery& q, const RationalCcdParams& params);
+/// The one entry point for rational queries: the exact answer to `params` for a query of any
+/// kind with mpq_class coordinates (the library defines it for each kind), the TOI when
+/// `want_toi` (else, for a collision, [0, 0]), or nullopt for no collision. Throws
+/// std::invalid_argument on a negative d or a tmax outside (0, 1].
+template <class RationalQuery>
+std::optional<TimeInterval> answer_rational_query(const RationalQuery& q, const RationalCcdParams& params, bool want_toi);
+
+/// True for the query types with rational coordinates.
+template <class Query>
+inline constexpr bool is_rational_query = std::is_same_v<coordinate_t<Query>, mpq_class>;
+
+/// Exact minimum-separation CCD for rational coordinates, every kind (see ccd.hpp's CcdParams
+/// functions). Throws std::invalid_argument on a negative d or a tmax outside (0, 1].
+template <class Query, std::enable_if_t<is_rational_query<Query>, int> = 0>
+bool ccd(const Query& q, const RationalCcdParams& params = {}) {
+  return answer_rational_query(q, params, false).has_value();
+}
 
 /// The exact TOI for rational coordinates with a minimum separation and a time limit, every kind.
-std::optional<TimeInterval> toi(const RationalVertexFaceQuery& q, const RationalCcdParams& params);
-/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
-std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q, const RationalCcdParams& params);
-/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
-std::optional<TimeInterval> toi(const RationalPointEdgeQuery& q, const RationalCcdParams& params);
-/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
-std::optional<TimeInterval> toi(const RationalPointPointQuery& q, const RationalCcdParams& params);
-/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
-std::optional<TimeInterval> toi(const RationalEdgeEdge2dQuery& q, const RationalCcdParams& params);
-/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
-std::optional<TimeInterval> toi(const RationalPointEdge2dQuery& q, const RationalCcdParams& params);
-/// See toi(const RationalVertexFaceQuery&, const RationalCcdParams&).
-std::optional<TimeInterval> toi(const RationalPointPoint2dQuery& q, const RationalCcdParams& params);
+template <class Query, std::enable_if_t<is_rational_query<Query>, int> = 0>
+std::optional<TimeInterval> toi(const Query& q, const RationalCcdParams& params = {}) {
+  return answer_rational_query(q, params, true);
+}
+
+/// Exact vertex-face CCD for rational coordinates.
+inline bool vertex_face_ccd(const RationalVertexFaceQuery& q) { return ccd(q); }
+/// Exact edge-edge CCD for rational coordinates.
+inline bool edge_edge_ccd(const RationalEdgeEdgeQuery& q) { return ccd(q); }
+/// Earliest time of impact of a vertex-face query with rational coordinates.
+inline std::optional<TimeInterval> vertex_face_toi(const RationalVertexFaceQuery& q) { return toi(q); }
+/// Earliest time of impact of an edge-edge query with rational coordinates.
+inline std::optional<TimeInterval> edge_edge_toi(const RationalEdgeEdgeQuery& q) { return toi(q); }
 
 }  // namespace exactccd

@@ -28,6 +28,7 @@
 #include <optional>
 #include <vector>
 
+#include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"
 #include "exactccd/stats.hpp"
 #include "exactccd/types.hpp"
@@ -97,71 +98,73 @@ std::array<Vec3T<T>, 4> body_points(const RigidEdgeEdgeQueryT<T>& q) {
   return {q.a0, q.a1, q.b0, q.b1};
 }
 
+/// The coordinate type of a rigid query (for ccd.hpp's ccd() and toi(), which therefore take
+/// rigid queries too).
+template <class T>
+struct QueryCoordinate<RigidVertexFaceQueryT<T>> {
+  using type = T;  ///< double, or mpq_class inside the library
+};
+/// See QueryCoordinate<RigidVertexFaceQueryT<T>>.
+template <class T>
+struct QueryCoordinate<RigidEdgeEdgeQueryT<T>> {
+  using type = T;  ///< double, or mpq_class inside the library
+};
+
+/// The one entry point (ccd.hpp) for rigid vertex-face queries: their answer to `params` by
+/// `method`, the TOI when `want_toi`. Throws std::invalid_argument on bad input (the top of this
+/// file) or an unknown method. ccd(), toi() and the named functions below call it.
+template <>
+std::optional<TimeInterval> answer_query(const RigidVertexFaceQuery& q, const CcdParams& params, Method method,
+                                         bool want_toi, StageCounters* counters);
+/// The one entry point for rigid edge-edge queries; see answer_query(const RigidVertexFaceQuery&, ...).
+template <>
+std::optional<TimeInterval> answer_query(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method,
+                                         bool want_toi, StageCounters* counters);
+
 /// True iff a rigid vertex-face query collides: p comes within distance <= params.min_distance
 /// of the closed triangle at some t in [0, params.tmax], decided exactly. Throws
 /// std::invalid_argument on bad input (see the top of this file) or an unknown method.
-bool rigid_vertex_face_ccd(const RigidVertexFaceQuery& q, const CcdParams& params = {},
-                           Method method = Method::filtered);
+inline bool rigid_vertex_face_ccd(const RigidVertexFaceQuery& q, const CcdParams& params = {},
+                                  Method method = Method::filtered) {
+  return ccd(q, params, method);
+}
 /// As above, counting in `counters` which stage of the filtered method decided the query.
-bool rigid_vertex_face_ccd(const RigidVertexFaceQuery& q, const CcdParams& params, Method method,
-                           StageCounters& counters);
+inline bool rigid_vertex_face_ccd(const RigidVertexFaceQuery& q, const CcdParams& params, Method method,
+                                  StageCounters& counters) {
+  return ccd(q, params, method, counters);
+}
 /// The earliest t in [0, tmax] at which p is within distance <= d of the triangle, as the
 /// tightest double interval, or std::nullopt when there is none.
-std::optional<TimeInterval> rigid_vertex_face_toi(const RigidVertexFaceQuery& q, const CcdParams& params = {},
-                                                  Method method = Method::filtered);
+inline std::optional<TimeInterval> rigid_vertex_face_toi(const RigidVertexFaceQuery& q, const CcdParams& params = {},
+                                                         Method method = Method::filtered) {
+  return toi(q, params, method);
+}
 /// As above, counting the deciding stage.
-std::optional<TimeInterval> rigid_vertex_face_toi(const RigidVertexFaceQuery& q, const CcdParams& params,
-                                                  Method method, StageCounters& counters);
+inline std::optional<TimeInterval> rigid_vertex_face_toi(const RigidVertexFaceQuery& q, const CcdParams& params,
+                                                         Method method, StageCounters& counters) {
+  return toi(q, params, method, counters);
+}
 
 /// True iff a rigid edge-edge query collides: the closed edges come within distance <=
 /// params.min_distance of each other at some t in [0, params.tmax], decided exactly.
-bool rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& q, const CcdParams& params = {},
-                         Method method = Method::filtered);
+inline bool rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& q, const CcdParams& params = {},
+                                Method method = Method::filtered) {
+  return ccd(q, params, method);
+}
 /// As above, counting the deciding stage.
-bool rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method,
-                         StageCounters& counters);
+inline bool rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method,
+                                StageCounters& counters) {
+  return ccd(q, params, method, counters);
+}
 /// The earliest t in [0, tmax] at which the edges are within distance <= d, or std::nullopt.
-std::optional<TimeInterval> rigid_edge_edge_toi(const RigidEdgeEdgeQuery& q, const CcdParams& params = {},
-                                                Method method = Method::filtered);
+inline std::optional<TimeInterval> rigid_edge_edge_toi(const RigidEdgeEdgeQuery& q, const CcdParams& params = {},
+                                                       Method method = Method::filtered) {
+  return toi(q, params, method);
+}
 /// As above, counting the deciding stage.
-std::optional<TimeInterval> rigid_edge_edge_toi(const RigidEdgeEdgeQuery& q, const CcdParams& params,
-                                                Method method, StageCounters& counters);
-
-/// The answer for a rigid query of either kind: see rigid_vertex_face_ccd.
-inline bool ccd(const RigidVertexFaceQuery& q, const CcdParams& params, Method method = Method::filtered) {
-  return rigid_vertex_face_ccd(q, params, method);
-}
-/// See rigid_edge_edge_ccd.
-inline bool ccd(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method = Method::filtered) {
-  return rigid_edge_edge_ccd(q, params, method);
-}
-/// The TOI of a rigid query of either kind: see rigid_vertex_face_toi.
-inline std::optional<TimeInterval> toi(const RigidVertexFaceQuery& q, const CcdParams& params,
-                                       Method method = Method::filtered) {
-  return rigid_vertex_face_toi(q, params, method);
-}
-/// See rigid_edge_edge_toi.
-inline std::optional<TimeInterval> toi(const RigidEdgeEdgeQuery& q, const CcdParams& params,
-                                       Method method = Method::filtered) {
-  return rigid_edge_edge_toi(q, params, method);
-}
-/// See rigid_vertex_face_ccd, with statistics.
-inline bool ccd(const RigidVertexFaceQuery& q, const CcdParams& params, Method method, StageCounters& counters) {
-  return rigid_vertex_face_ccd(q, params, method, counters);
-}
-/// See rigid_edge_edge_ccd, with statistics.
-inline bool ccd(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method, StageCounters& counters) {
-  return rigid_edge_edge_ccd(q, params, method, counters);
-}
-/// See rigid_vertex_face_toi, with statistics.
-inline std::optional<TimeInterval> toi(const RigidVertexFaceQuery& q, const CcdParams& params, Method method,
-                                       StageCounters& counters) {
-  return rigid_vertex_face_toi(q, params, method, counters);
-}
-/// See rigid_edge_edge_toi, with statistics.
-inline std::optional<TimeInterval> toi(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method,
-                                       StageCounters& counters) {
-  return rigid_edge_edge_toi(q, params, method, counters);
+inline std::optional<TimeInterval> rigid_edge_edge_toi(const RigidEdgeEdgeQuery& q, const CcdParams& params,
+                                                       Method method, StageCounters& counters) {
+  return toi(q, params, method, counters);
 }
 
 // ---------------------------------------------------------------------------------------

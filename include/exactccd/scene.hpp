@@ -184,10 +184,16 @@ struct SceneCandidates {
 /// A scene's broad phase kept across calls: bounding volume hierarchies over the triangles, the
 /// edges and the isolated points, built once and refitted (not rebuilt) when only the positions
 /// at t = 1 change, as in a line search that tries several steps from the same positions at
-/// t = 0 over the same topology. The candidates are always exactly those a new SceneBroadPhase
-/// of the current scene would give (the hierarchy's shape affects only speed). Built and
-/// queried on options.threads threads. Not thread-safe for update() concurrently with reads;
-/// const members may be called from several threads.
+/// t = 0 over the same topology. It answers the scene functions for the scene as it is now
+/// (find_collisions(), earliest_toi(), is_collision_free(), max_collision_free_step(): exactly
+/// the answers of the free functions for scene() and the options given at construction), each
+/// streaming the trees' pairs into the narrow phase without storing them; so a line search
+/// calling update() and max_collision_free_step() for shrinking steps pays the topology and
+/// the trees' build once. The candidates are always exactly those a new SceneBroadPhase of the
+/// current scene would give (the hierarchy's shape affects only speed); candidates() lists
+/// them on first request after a change. Built and queried on options.threads threads. Not
+/// thread-safe for update() concurrently with other calls; const members may be called from
+/// several threads.
 class SceneBroadPhase {
  public:
   /// Validates the scene and the options (std::invalid_argument, as validate()), keeps a copy
@@ -206,10 +212,24 @@ class SceneBroadPhase {
   /// Not copyable.
   SceneBroadPhase& operator=(const SceneBroadPhase&) = delete;
 
-  /// Replaces the scene's positions at t = 1 (positions at t = 0 and topology kept), refits
-  /// the hierarchies and recomputes the candidates. Throws std::invalid_argument (leaving the
-  /// object unchanged) when the size differs from positions_t0 or a coordinate is not finite.
+  /// Replaces the scene's positions at t = 1 (positions at t = 0 and topology kept) and refits
+  /// the hierarchies (the candidates are listed again when next asked for). Throws
+  /// std::invalid_argument (leaving the object unchanged) when the size differs from
+  /// positions_t0 or a coordinate is not finite.
   void update(const std::vector<Vec3>& positions_t1);
+
+  /// find_collisions(scene(), options) from the kept hierarchies.
+  std::vector<Collision> find_collisions() const;
+
+  /// earliest_toi(scene(), options) from the kept hierarchies.
+  std::optional<TimeInterval> earliest_toi() const;
+
+  /// is_collision_free(scene(), options) from the kept hierarchies.
+  bool is_collision_free() const;
+
+  /// max_collision_free_step(scene(), options) from the kept hierarchies: the step of a line
+  /// search after update(positions_t1) with the trial positions.
+  double max_collision_free_step() const;
 
   /// The scene as it is now (the last positions_t1 given).
   const Scene& scene() const;
@@ -218,7 +238,8 @@ class SceneBroadPhase {
   /// sorted): what SceneCandidates::edge_edge and point_edge index.
   const std::vector<std::array<int, 2>>& edges() const;
 
-  /// The candidates of the scene as it is now.
+  /// The candidates of the scene as it is now (listed on the first call after construction or
+  /// update(), then kept until the next update()).
   const SceneCandidates& candidates() const;
 
  private:
@@ -236,7 +257,13 @@ class SceneBroadPhase {
 /// edge; a coplanar fold-over beyond it is not reported). Degenerate triangles (collinear or
 /// coincident positions) are their hulls. Throws std::invalid_argument on non-finite
 /// coordinates, out-of-range or repeated indices.
+/// Runs on one thread (the overload below takes a thread count).
 bool intersection_free(const std::vector<Vec3>& positions,
                        const std::vector<std::array<int, 3>>& triangles);
+
+/// intersection_free(positions, triangles) on `threads` threads (0: every hardware thread, at
+/// most 1024); the answer does not depend on them. Stops at the first intersecting pair found.
+bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
+                       unsigned threads);
 
 }  // namespace exactccd

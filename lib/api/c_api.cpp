@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "exactccd/ccd.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "kinds/primitive_kinds.hpp"
 
 namespace {
@@ -34,7 +34,7 @@ std::optional<Query> read_any_query(const double* q) {
 template <class Query, class Toi>
 exactccd_status toi_impl(const double* query, int* collides, double* lo, double* hi, Toi&& toi) {
   if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const filter::DefaultFpEnvironment fp_environment;  // as every C++ entry point
+  const numeric::DefaultFpEnvironment fp_environment;  // as every C++ entry point
   const std::optional<Query> q = read_any_query<Query>(query);
   if (!q) return EXACTCCD_ERROR_NON_FINITE;
   try {
@@ -49,14 +49,13 @@ exactccd_status toi_impl(const double* query, int* collides, double* lo, double*
 }
 
 
-/// Calls f(Kind{}) for the kind with the C enum value `kind` (for_each_separation_kind's
-/// order); false for an unknown value.
+/// Calls f(Kind{}) for the kind whose exactccd_kind value is `kind` (Kind::c_kind); false for an
+/// unknown value.
 template <class F>
 bool visit_c_kind(int kind, F&& f) {
-  int i = 0;
   bool found = false;
-  kinds::for_each_separation_kind([&](auto k) {
-    if (i++ == kind) {
+  kinds::for_each_kind([&](auto k) {
+    if (decltype(k)::c_kind == kind) {
       f(k);
       found = true;
     }
@@ -67,7 +66,7 @@ bool visit_c_kind(int kind, F&& f) {
 exactccd_status separation_impl(int kind, const double* query, double d, double tmax, bool want_toi,
                                 int* collides, double* lo, double* hi) {
   if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const filter::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
+  const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
   if (!(std::isfinite(d) && d >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
   exactccd_status status = EXACTCCD_ERROR_PARAMETER;
   visit_c_kind(kind, [&](auto k) {

@@ -9,7 +9,7 @@
 
 #include "exactccd/candidates.hpp"
 #include "exactccd/exactccd.h"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 
 namespace {
 
@@ -41,7 +41,7 @@ exactccd_status with_candidates(const double* x0, const double* x1, std::size_t 
   if ((c->vertex_face_count > 0 && !c->vertex_face) || (c->edge_edge_count > 0 && !c->edge_edge) ||
       (c->point_edge_count > 0 && !c->point_edge) || (c->point_point_count > 0 && !c->point_point))
     return EXACTCCD_ERROR_NULL;
-  const filter::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
+  const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
   if (!(std::isfinite(d) && d >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
   if (n > static_cast<std::size_t>(INT_MAX)) return EXACTCCD_ERROR_PARAMETER;
   for (std::size_t i = 0; i < 3 * n; ++i)

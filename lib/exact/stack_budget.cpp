@@ -11,7 +11,7 @@
 #define EXACTCCD_HAVE_PTHREAD_STACKSIZE 1
 #endif
 
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 
 namespace exactccd::exact {
 namespace {
@@ -105,7 +105,7 @@ void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& wo
   const int started = sized != 0 ? sized : pthread_create(&thread, &attr, [](void* arg) -> void* {
     auto* j = static_cast<Job*>(arg);
     try {
-      const filter::DefaultFpEnvironment fp_environment;  // a new thread's, made certain
+      const numeric::DefaultFpEnvironment fp_environment;  // a new thread's, made certain
       (*j->work)();
     } catch (...) {
       j->error = std::current_exception();

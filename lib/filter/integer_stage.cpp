@@ -221,107 +221,125 @@ bool earlier(const TimeInterval& a, const TimeInterval& b) {
   return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
 }
 
-template <class Z, class IntegerQuery, class Query>
-StageResult run_integer_stage(const IntegerQuery& q, const Query& double_query, bool want_toi) {
-  std::deque<IntegerPolyT<Z>> defining;  // stable addresses for Candidate::defining
-  std::vector<Candidate<Z>> candidates;
-  const auto add_roots_of = [&](const IntegerPolyT<Z>& p) {  // returns how many roots it added
+/// The candidate times of a query, each with the polynomial whose simple root it is (kept at
+/// stable addresses).
+template <class Z>
+struct CandidateTimes {
+  std::deque<IntegerPolyT<Z>> defining;
+  std::vector<Candidate<Z>> list;
+
+  /// Adds the roots of p in [0, 1] (increasing); returns how many it added.
+  std::size_t add_roots_of(const IntegerPolyT<Z>& p) {
     exact::RootsOfT<Z> found = exact::isolate_roots(p);
     defining.push_back(std::move(found.defining));
     for (IsolatedRootT<Z>& r : found.roots) {
       exact::refine_with_approximation(defining.back(), r);
-      candidates.push_back({std::move(r), &defining.back()});
+      list.push_back({std::move(r), &defining.back()});
     }
     return found.roots.size();
-  };
+  }
+  /// Adds an exact dyadic time.
+  void add_exact(const DyadicT<Z>& at) {
+    Candidate<Z> c;
+    c.root.exact = true;
+    c.root.at = at;
+    list.push_back(std::move(c));
+  }
+};
 
+/// The candidates of a query coplanar for all t (V = 0): 0, 1 and the roots of the polynomials
+/// the rule can consult somewhere in [0, 1] (docs/design.md): a branch-vector component that is
+/// nonzero without a root in [0, 1] keeps the rule in its proper branch throughout; a branch
+/// vector that vanishes identically, in the other.
+template <class Z, class Polys>
+void add_coplanar_candidates(const Polys& P, CandidateTimes<Z>& times) {
+  times.add_exact(DyadicT<Z>{Z(0), 0});
+  times.add_exact(DyadicT<Z>{Z(1), 0});
+  bool vector_nowhere_zero = false, vector_identically_zero = true;
+  const auto& v = contact::branch_vector(P);
+  for (const auto* component : {&v.x, &v.y, &v.z}) {
+    const IntegerPolyT<Z> ip = integer_poly(*component);
+    if (ip.is_zero()) continue;
+    vector_identically_zero = false;
+    if (times.add_roots_of(ip) == 0) vector_nowhere_zero = true;
+  }
+  const auto add = [&](const auto& p) {
+    const IntegerPolyT<Z> ip = integer_poly(p);
+    if (!ip.is_zero()) times.add_roots_of(ip);
+  };
+  if (!vector_identically_zero) contact::for_each_proper_poly(P, add);
+  if (!vector_nowhere_zero) contact::for_each_degenerate_poly(P, add);
+}
+
+/// The interval versions of the rule's polynomials of the double query, built up front under
+/// the rounding mode interval arithmetic needs (every interval operation, the motions computed
+/// by the constructor included, must run under it; the dual oracle evaluates them).
+template <class Query>
+auto interval_polynomials(const Query& double_query) {
+  using IntervalQuery = typename kinds::kind_of<Query>::template Query<Interval>;
+  std::array<Vec3T<Interval>, 8> interval_rows;
+  const auto d = rows(double_query);
+  for (std::size_t i = 0; i < d.size(); ++i) interval_rows[i] = {Interval(d[i].x), Interval(d[i].y), Interval(d[i].z)};
+  std::optional<decltype(contact::polynomials(from_rows<IntervalQuery>(interval_rows)))> P;
+  CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
+  P.emplace(contact::polynomials(from_rows<IntervalQuery>(interval_rows)));
+  contact::for_each_in_plane_poly(*P, [](const auto&) {});
+  return P;
+}
+
+/// The first candidate where the rule holds (exactly): a collision with its tightest TOI when
+/// asked; the roots of V come in increasing order, a coplanar query's are compared.
+template <class Z, class DualSet>
+pipeline::Outcome earliest_contact(CandidateTimes<Z>& times, const DualSet& dual_set, bool coplanar, bool want_toi) {
+  std::optional<TimeInterval> best;
+  for (Candidate<Z>& c : times.list) {
+    if (contact::in_plane_contact(dual_set, RootSignOracle<Z>{c}) != contact::Truth::yes) continue;  // exact
+    if (!want_toi) return pipeline::Outcome::collides();
+    const TimeInterval t = enclose(c);
+    if (!best || earlier(t, *best)) best = t;
+    if (!coplanar) break;
+  }
+  return best ? pipeline::Outcome::collides(best) : pipeline::Outcome::separate();
+}
+
+template <class Z, class IntegerQuery, class Query>
+pipeline::Outcome run_integer_stage(const IntegerQuery& q, const Query& double_query, bool want_toi) {
+  CandidateTimes<Z> times;
   const auto P = contact::polynomials(q);
   const IntegerPolyT<Z> v = integer_poly(P.volume());
   const bool coplanar = v.is_zero();
-  if (!coplanar) add_roots_of(v);  // increasing order
-  if (!coplanar && candidates.empty()) return {Verdict::no_collision, std::nullopt};
-
-  if (coplanar) {
-    for (const DyadicT<Z>& end : {DyadicT<Z>{Z(0), 0}, DyadicT<Z>{Z(1), 0}}) {
-      Candidate<Z> c;
-      c.root.exact = true;
-      c.root.at = end;
-      candidates.push_back(std::move(c));
-    }
-    // Only the polynomials the rule can consult somewhere in [0, 1] matter (docs/design.md):
-    // a branch-vector component that is nonzero without a root in [0, 1] keeps the rule in
-    // its proper branch throughout; a branch vector that vanishes identically, in the other.
-    bool vector_nowhere_zero = false, vector_identically_zero = true;
-    const auto& v = contact::branch_vector(P);
-    for (const auto* component : {&v.x, &v.y, &v.z}) {
-      const IntegerPolyT<Z> ip = integer_poly(*component);
-      if (ip.is_zero()) continue;
-      vector_identically_zero = false;
-      if (add_roots_of(ip) == 0) vector_nowhere_zero = true;
-    }
-    const auto add = [&](const auto& p) {
-      const IntegerPolyT<Z> ip = integer_poly(p);
-      if (!ip.is_zero()) add_roots_of(ip);
-    };
-    if (!vector_identically_zero) contact::for_each_proper_poly(P, add);
-    if (!vector_nowhere_zero) contact::for_each_degenerate_poly(P, add);
-  }
-
-  // The interval versions of the rule's polynomials, built up front under the rounding mode
-  // interval arithmetic needs (the dual oracle evaluates them; GMP work is integer-only).
-  using IntervalQuery = typename kinds::kind_of<Query>::template Query<Interval>;
-  std::array<Vec3T<Interval>, 8> interval_rows;
-  {
-    const auto d = rows(double_query);
-    for (std::size_t i = 0; i < d.size(); ++i)
-      interval_rows[i] = {Interval(d[i].x), Interval(d[i].y), Interval(d[i].z)};
-  }
-  // Every interval operation, the motions computed by the constructor included, must run
-  // under the rounding mode (Interval_nt<false> relies on it for its enclosures).
-  std::optional<decltype(contact::polynomials(from_rows<IntervalQuery>(interval_rows)))> PI;
-  {
-    CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
-    PI.emplace(contact::polynomials(from_rows<IntervalQuery>(interval_rows)));
-    contact::for_each_in_plane_poly(*PI, [](const auto&) {});
-  }
-  const auto dual_set = dual_polys(*PI, P);
-
-  std::optional<TimeInterval> best;
-  for (Candidate<Z>& c : candidates) {
-    if (contact::in_plane_contact(dual_set, RootSignOracle<Z>{c}) != contact::Truth::yes) continue;  // exact
-    if (!want_toi) return {Verdict::collision, std::nullopt};
-    const TimeInterval t = enclose(c);
-    if (!best || earlier(t, *best)) best = t;
-    if (!coplanar) break;  // the roots of V come in increasing order
-  }
-  if (!best) return {Verdict::no_collision, std::nullopt};
-  return {Verdict::collision, best};
+  if (coplanar)
+    add_coplanar_candidates(P, times);
+  else if (times.add_roots_of(v) == 0)
+    return pipeline::Outcome::separate();
+  const auto PI = interval_polynomials(double_query);
+  return earliest_contact(times, dual_polys(*PI, P), coplanar, want_toi);
 }
 
 template <class Z, class Query>
-StageResult integer_stage_of(const Query& q, bool want_toi) {
+pipeline::Outcome integer_stage_of(const Query& q, bool want_toi) {
   try {
     using IntegerQuery = typename kinds::kind_of<Query>::template Query<Z>;
     return run_integer_stage<Z>(to_integer_query<IntegerQuery>(q), q, want_toi);
   } catch (const std::runtime_error&) {
     // GMP: an internal limit, the CGAL path decides. FixedInteger: also an overflow
     // (std::overflow_error) or a subnormal time (integer_ops.hpp): the GMP stage decides.
-    return {};
+    return pipeline::Outcome::undecided();
   }
 }
 
 template <class Query>
-StageResult fixed_integer_stage_of(const Query& q, bool want_toi) {
-  if (exponent_spread(q) > kFixedIntegerSpreadLimit) return {};
+pipeline::Outcome fixed_integer_stage_of(const Query& q, bool want_toi) {
+  if (exponent_spread(q) > kFixedIntegerSpreadLimit) return pipeline::Outcome::undecided();
   return integer_stage_of<exact::FixedInteger>(q, want_toi);
 }
 
 }  // namespace
 
-StageResult integer_stage(const VertexFaceQuery& q, bool want_toi) { return integer_stage_of<Integer>(q, want_toi); }
-StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return integer_stage_of<Integer>(q, want_toi); }
+pipeline::Outcome integer_stage(const VertexFaceQuery& q, bool want_toi) { return integer_stage_of<Integer>(q, want_toi); }
+pipeline::Outcome integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return integer_stage_of<Integer>(q, want_toi); }
 
-StageResult fixed_integer_stage(const VertexFaceQuery& q, bool want_toi) { return fixed_integer_stage_of(q, want_toi); }
-StageResult fixed_integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return fixed_integer_stage_of(q, want_toi); }
+pipeline::Outcome fixed_integer_stage(const VertexFaceQuery& q, bool want_toi) { return fixed_integer_stage_of(q, want_toi); }
+pipeline::Outcome fixed_integer_stage(const EdgeEdgeQuery& q, bool want_toi) { return fixed_integer_stage_of(q, want_toi); }
 
 }  // namespace exactccd::filter

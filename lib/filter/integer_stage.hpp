@@ -6,16 +6,16 @@
 #pragma once
 
 #include "exactccd/types.hpp"
-#include "filter/interval_stage.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::filter {
 
-/// Stage 3 for vertex-face: exact; the verdict is never `uncertain` unless an internal limit is
-/// hit (then the CGAL path decides). With want_toi, a collision carries its tightest TOI.
-StageResult integer_stage(const VertexFaceQuery& q, bool want_toi);
+/// Stage 3 for vertex-face: exact; never undecided unless an internal limit is hit (then the
+/// CGAL path decides). With want_toi, a collision carries its tightest TOI.
+pipeline::Outcome integer_stage(const VertexFaceQuery& q, bool want_toi);
 
 /// Stage 3 for edge-edge; see integer_stage(const VertexFaceQuery&, bool).
-StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi);
+pipeline::Outcome integer_stage(const EdgeEdgeQuery& q, bool want_toi);
 
 // Stage 3a, in front of the GMP stage: the same algorithm and code (integer_stage.cpp is a
 // template on the integer type) in exact::FixedInteger, a 1024-bit integer stored inline
@@ -57,11 +57,31 @@ StageResult integer_stage(const EdgeEdgeQuery& q, bool want_toi);
 inline constexpr int kFixedIntegerSpreadLimit = 128;
 
 /// Stage 3a for vertex-face: the integer stage in exact::FixedInteger (see above). Exact when
-/// it decides; `uncertain` when the exponent spread exceeds kFixedIntegerSpreadLimit, when an
+/// it decides; undecided when the exponent spread exceeds kFixedIntegerSpreadLimit, when an
 /// operation would overflow 1024 bits or an internal limit is hit (then the GMP stage decides).
-StageResult fixed_integer_stage(const VertexFaceQuery& q, bool want_toi);
+pipeline::Outcome fixed_integer_stage(const VertexFaceQuery& q, bool want_toi);
 
 /// Stage 3a for edge-edge; see fixed_integer_stage(const VertexFaceQuery&, bool).
-StageResult fixed_integer_stage(const EdgeEdgeQuery& q, bool want_toi);
+pipeline::Outcome fixed_integer_stage(const EdgeEdgeQuery& q, bool want_toi);
+
+/// Stage 3a in the contact question's stage list.
+struct FixedIntegerStage {
+  static constexpr pipeline::Counter counter = &StageCounters::fixed_integer;  ///< counted as
+  /// The stage on work.query() (also, after a collision was proved, for its TOI).
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    return fixed_integer_stage(work.query(), work.question.want_toi);
+  }
+};
+
+/// Stage 3 in the contact question's stage list.
+struct IntegerStage {
+  static constexpr pipeline::Counter counter = &StageCounters::integer;  ///< counted as
+  /// The stage on work.query() (also, after a collision was proved, for its TOI).
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    return integer_stage(work.query(), work.question.want_toi);
+  }
+};
 
 }  // namespace exactccd::filter

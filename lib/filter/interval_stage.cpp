@@ -17,7 +17,7 @@
 //    small-integer or dyadic input, where interval arithmetic happens to be exact); zero
 //    coefficients are skipped when counting sign changes.
 // 2. Cells come out in increasing t. Over a root cell T every other term of the rule is
-//    enclosed over T, first from the points' relative positions over T (interval_values.hpp),
+//    enclosed over T, first from the points' relative positions over T (interval/values.hpp),
 //    then from its polynomial by interval Horner: an interval that excludes 0 gives the term's
 //    sign at the root, an exact [0, 0] means the term vanishes identically, anything else is
 //    uncertain. Uncertain: shrink T by certified bisection of V and retry.
@@ -44,7 +44,9 @@
 //    (w = 0, known exactly), which decides the common roots of V and w that item 2 cannot.
 #include "filter/interval_stage.hpp"
 
-#include "filter/interval_strategies.hpp"
+#include "filter/interval/coplanar_roots.hpp"
+#include "filter/interval/factored_roots.hpp"
+#include "filter/interval/moving_roots.hpp"
 #include "filter/static_stage.hpp"
 #include "kinds/primitive_kinds.hpp"
 
@@ -52,6 +54,7 @@ namespace exactccd::filter {
 namespace {
 
 using interval::Interval;
+using pipeline::Outcome;
 
 template <class IntervalQuery, class Query>
 IntervalQuery to_interval_query(const Query& q) {
@@ -77,41 +80,46 @@ struct ExactEnds {
   }
 };
 
-/// The stage on one query.
+/// The stage on one query: the strategies of the file comment, in order.
 template <class IntervalQuery, class Query>
-StageResult run_interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi) {
+Outcome run_interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi,
+                           pipeline::Findings& findings) {
   const auto P = contact::polynomials(q);
   if (interval::exactly_zero(P.volume())) return interval::coplanar_strategy(P, want_toi);
-  const StageResult moving = interval::moving_strategy(P, ExactEnds<Query>{double_query}, want_toi);
+  const Outcome moving = interval::moving_strategy(P, ExactEnds<Query>{double_query}, want_toi, findings.toi_cell);
   // A collision whose TOI cell was handed over (toi_cell) needs nothing more here.
-  const bool toi_missing = want_toi && moving.verdict == Verdict::collision && !moving.toi && !moving.toi_cell;
-  if (moving.verdict != Verdict::uncertain && !toi_missing) return moving;
+  const bool collides = moving.answer == Outcome::Answer::collides;
+  const bool toi_missing = want_toi && collides && !moving.toi && !findings.toi_cell;
+  if (moving.answer != Outcome::Answer::undecided && !toi_missing) return moving;
   // Contact needs V(t) = 0 and the in-plane rule at the same t: a rule certainly false at every
   // t of [0, 1] (its deciding sign certified over the whole interval) excludes contact wherever
   // V's roots are. Decides nearly coplanar motion (resting contact, V within rounding of 0 for
   // all t, roots not isolable) when the point stays clearly outside the triangle's edge.
-  if (moving.verdict == Verdict::uncertain && interval::rule_over_unit_interval(P) == contact::Truth::no)
-    return {Verdict::no_collision, std::nullopt};
-  // Uncertain, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
+  if (!collides && interval::rule_over_unit_interval(P) == contact::Truth::no) return Outcome::separate();
+  // Undecided, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
   // a root it shares with a factor's): the factored view may decide or narrow on the factor.
-  const StageResult factored = interval::factored_strategy(P, q, want_toi);
-  if (factored.verdict != Verdict::uncertain && !(toi_missing && !factored.toi)) return factored;
+  const Outcome factored = interval::factored_strategy(P, q, want_toi);
+  if (factored.answer != Outcome::Answer::undecided && !(toi_missing && !factored.toi)) return factored;
   // Edge directions equal (or opposite) in two coordinates: V = -Delta F, w = Delta (da x e_k).
-  const StageResult parallel = interval::parallel_factor_strategy(P, q, want_toi);
-  if (parallel.verdict == Verdict::uncertain || (toi_missing && !parallel.toi)) return moving;
+  const Outcome parallel = interval::parallel_factor_strategy(P, q, want_toi);
+  if (parallel.answer == Outcome::Answer::undecided || (toi_missing && !parallel.toi)) return moving;
   return parallel;
 }
 
 template <class Query>
-StageResult interval_stage_of(const Query& q, bool want_toi) {
+Outcome interval_stage_of(const Query& q, bool want_toi, pipeline::Findings& findings) {
   CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
   using IntervalQuery = typename kinds::kind_of<Query>::template Query<Interval>;
-  return run_interval_stage(to_interval_query<IntervalQuery>(q), q, want_toi);
+  return run_interval_stage(to_interval_query<IntervalQuery>(q), q, want_toi, findings);
 }
 
 }  // namespace
 
-StageResult interval_stage(const VertexFaceQuery& q, bool want_toi) { return interval_stage_of(q, want_toi); }
-StageResult interval_stage(const EdgeEdgeQuery& q, bool want_toi) { return interval_stage_of(q, want_toi); }
+Outcome interval_stage(const VertexFaceQuery& q, bool want_toi, pipeline::Findings& findings) {
+  return interval_stage_of(q, want_toi, findings);
+}
+Outcome interval_stage(const EdgeEdgeQuery& q, bool want_toi, pipeline::Findings& findings) {
+  return interval_stage_of(q, want_toi, findings);
+}
 
 }  // namespace exactccd::filter

@@ -9,41 +9,68 @@
 #include <cmath>
 
 #include "exactccd/types.hpp"
-#include "filter/power_of_two.hpp"
+#include "filter/volume_exclusion.hpp"
+#include "numeric/power_of_two.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::filter {
 
-/// The query scaled by 2^s so that its largest |coordinate| lies in [1, 2), when every scaled
-/// coordinate is exact (scaling up never rounds below the largest magnitude 2; scaling down may
-/// underflow small coordinates, and then the query is returned unchanged). sets `scaled`.
+/// Writes to `out` the query q scaled by 2^s so that its largest |coordinate| lies in [1, 2),
+/// and returns true, when s != 0 and every scaled coordinate is exact (scaling up never rounds
+/// below the largest magnitude 2; scaling down may underflow small coordinates, and then `out`
+/// is left as it was and the answer is false).
 template <class Query>
-Query scaled_to_unit(const Query& q, bool& scaled) {
-  scaled = false;
+bool scale_to_unit(const Query& q, Query& out) {
   auto r = rows(q);
   double largest = 0;
   // Finite input: plain comparisons (std::fmax's NaN handling costs a library call each).
   for (const Vec3& p : r)
     for (const double x : {p.x, p.y, p.z}) largest = std::fabs(x) > largest ? std::fabs(x) : largest;
-  if (largest == 0) return q;
-  const UnitScale unit = unit_scale(largest);
+  if (largest == 0) return false;
+  const numeric::UnitScale unit = numeric::unit_scale(largest);
   const int s = unit.s;
-  if (s == 0) return q;
+  if (s == 0) return false;
   if (s > 0 && s <= 1000) {
     // Scaling up by a normal power of two: every product is exact (no underflow, and no
     // overflow since the largest result is below 2). One multiplication per coordinate.
     const double factor = unit.first;  // 2^s (unit.second is 1)
     for (Vec3& p : r) p = {p.x * factor, p.y * factor, p.z * factor};
-    scaled = true;
-    return from_rows<Query>(r);
+    out = from_rows<Query>(r);
+    return true;
   }
   for (Vec3& p : r)
     for (double* x : {&p.x, &p.y, &p.z}) {
       const double y = std::ldexp(*x, s);
-      if (std::ldexp(y, -s) != *x) return q;  // a coordinate would round (underflow)
+      if (std::ldexp(y, -s) != *x) return false;  // a coordinate would round (underflow)
       *x = y;
     }
-  scaled = true;
-  return from_rows<Query>(r);
+  out = from_rows<Query>(r);
+  return true;
 }
+
+/// The query scaled as by scale_to_unit, or q itself; `scaled` tells which.
+template <class Query>
+Query scaled_to_unit(const Query& q, bool& scaled) {
+  Query out = q;
+  scaled = scale_to_unit(q, out);
+  return out;
+}
+
+/// The contact question's step after stage 1, past the hot path: the query brought to a
+/// magnitude near 1 (exactly) so that huge or tiny coordinates do not overflow or underflow the
+/// later filters (answers are unchanged), and stage 1 retried on it only where its range
+/// limits stopped it (volume_exclusion.hpp: otherwise the scaled query's rounded values are
+/// the same up to a power of two). Counted as volume exclusion when the retry decides.
+struct UnitScalingStage {
+  static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
+  /// Rescales work.query(); decides when the retried stage 1 does.
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    if (!scale_to_unit(work.query(), work.replacement())) return pipeline::Outcome::undecided();
+    work.use_replacement();
+    if (work.findings.volume_out_of_range && volume_excluded(work.query())) return pipeline::Outcome::separate();
+    return pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::filter

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "exactccd/types.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::filter {
 
@@ -36,5 +37,18 @@ int volume_sign_at_end(const VertexFaceQuery& q, int end);
 int volume_sign_at_end(const EdgeEdgeQuery& q, int end);
 
 // All four call CGAL's static filters, which assume round-to-nearest.
+
+/// The contact question's stage for queries in which nothing moves: decided at t = 0 (the TOI
+/// is 0 when they touch).
+struct StaticQueryStage {
+  static constexpr pipeline::Counter counter = &StageCounters::static_predicates;  ///< counted as
+  /// Decides static queries, passes the others on.
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    if (!is_static(work.query())) return pipeline::Outcome::undecided();
+    if (!contact_at_end(work.query(), 0)) return pipeline::Outcome::separate();
+    return pipeline::Outcome::collides(TimeInterval{0.0, 0.0});
+  }
+};
 
 }  // namespace exactccd::filter

@@ -63,6 +63,7 @@
 
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::filter {
 
@@ -233,5 +234,19 @@ template <class Query>
 inline bool volume_excluded(const Query& q) {
   return volume_exclusion(q) == Exclusion::excluded;
 }
+
+/// Stage 1 of the contact question (pipeline/outcome.hpp): V(t) != 0 on [0, 1], so the four
+/// points are never coplanar and the primitives never touch. Hands over whether its bound
+/// could not apply (volume_out_of_range: worth a retry on the query scaled towards 1).
+struct VolumeExclusionStage {
+  static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
+  /// The stage on work.query().
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    const Exclusion e = volume_exclusion(work.query());
+    work.findings.volume_out_of_range = e == Exclusion::out_of_range;
+    return e == Exclusion::excluded ? pipeline::Outcome::separate() : pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::filter

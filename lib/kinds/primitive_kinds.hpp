@@ -6,13 +6,14 @@
 // (lib/contact), templated on the number type. Every layer derives what it needs from this:
 // the filter's stage dispatch (stage functions are overloads on the query type), the public
 // entry points, the CLI's readers, printers and --kind values, bench, compare, fuzz-against
-// and the test parameterisation (for_each_kind).
+// and the test parameterisation (for_each_contact_kind).
 #pragma once
 
 #include <array>
 #include <string_view>
 #include <type_traits>
 
+#include "exactccd/exactccd.h"
 #include "exactccd/plugin.h"
 #include "exactccd/types.hpp"
 
@@ -33,11 +34,18 @@ struct Feature {
   std::array<int, 4> points;
 };
 
+/// Which of a kind's feature pairs (at most 9) take part in a computation: mask[f] for the f-th.
+using FeatureMask = std::array<bool, 9>;
+
+/// Every feature pair.
+inline constexpr FeatureMask kAllFeatures{true, true, true, true, true, true, true, true, true};
+
 /// Vertex-face: a point p against a triangle (a, b, c).
 struct VertexFace {
   template <class T>
   using Query = VertexFaceQueryT<T>;
   static constexpr std::string_view name = "vertex-face";  ///< file names, tables, JSON
+  static constexpr int c_kind = EXACTCCD_VERTEX_FACE;  ///< the C API's exactccd_kind
   static constexpr std::string_view short_name = "vf";     ///< the CLI's --kind value
   static constexpr std::string_view function = "vertex_face";  ///< C++ and C API stem
   static constexpr std::string_view plugin_symbol = EXACTCCD_PLUGIN_VF_SYMBOL;  ///< plugin.h
@@ -65,6 +73,7 @@ struct EdgeEdge {
   template <class T>
   using Query = EdgeEdgeQueryT<T>;
   static constexpr std::string_view name = "edge-edge";
+  static constexpr int c_kind = EXACTCCD_EDGE_EDGE;
   static constexpr std::string_view short_name = "ee";
   static constexpr std::string_view function = "edge_edge";
   static constexpr std::string_view plugin_symbol = EXACTCCD_PLUGIN_EE_SYMBOL;
@@ -93,6 +102,7 @@ struct PointEdge {
   template <class T>
   using Query = PointEdgeQueryT<T>;
   static constexpr std::string_view name = "point-edge";
+  static constexpr int c_kind = EXACTCCD_POINT_EDGE;
   static constexpr std::string_view short_name = "pe";
   static constexpr std::string_view function = "point_edge";
   static constexpr int points = 3;
@@ -109,6 +119,7 @@ struct PointPoint {
   template <class T>
   using Query = PointPointQueryT<T>;
   static constexpr std::string_view name = "point-point";
+  static constexpr int c_kind = EXACTCCD_POINT_POINT;
   static constexpr std::string_view short_name = "pp";
   static constexpr std::string_view function = "point_point";
   static constexpr int points = 2;
@@ -124,6 +135,7 @@ struct EdgeEdge2d {
   template <class T>
   using Query = EdgeEdge2dQueryT<T>;
   static constexpr std::string_view name = "edge-edge-2d";
+  static constexpr int c_kind = EXACTCCD_EDGE_EDGE_2D;
   static constexpr std::string_view short_name = "ee2";
   static constexpr std::string_view function = "edge_edge_2d";
   static constexpr int points = 4;
@@ -138,6 +150,7 @@ struct PointEdge2d {
   template <class T>
   using Query = PointEdge2dQueryT<T>;
   static constexpr std::string_view name = "point-edge-2d";
+  static constexpr int c_kind = EXACTCCD_POINT_EDGE_2D;
   static constexpr std::string_view short_name = "pe2";
   static constexpr std::string_view function = "point_edge_2d";
   static constexpr int points = 3;
@@ -152,6 +165,7 @@ struct PointPoint2d {
   template <class T>
   using Query = PointPoint2dQueryT<T>;
   static constexpr std::string_view name = "point-point-2d";
+  static constexpr int c_kind = EXACTCCD_POINT_POINT_2D;
   static constexpr std::string_view short_name = "pp2";
   static constexpr std::string_view function = "point_point_2d";
   static constexpr int points = 2;
@@ -196,17 +210,11 @@ struct KindOf<PointPoint2dQueryT<T>> {
 template <class Query>
 using kind_of = typename KindOf<std::decay_t<Query>>::type;
 
-/// Calls f(Kind{}) for every kind, in a fixed order (the order of --kind values and tables).
+/// The one list of kinds: calls f(Kind{}) for every kind, in the order of the CLI's --kind
+/// values, the C API's exactccd_kind and every table: vf, ee, pe, pp, ee2, pe2, pp2. Every
+/// layer derives its kinds from it (docs/design.md, 7b).
 template <class F>
 constexpr void for_each_kind(F&& f) {
-  f(VertexFace{});
-  f(EdgeEdge{});
-}
-
-/// Calls f(Kind{}) for every kind of the minimum-separation questions (CcdParams), in the
-/// order of the CLI's --kind values: vf, ee, pe, pp, ee2, pe2, pp2.
-template <class F>
-constexpr void for_each_separation_kind(F&& f) {
   f(VertexFace{});
   f(EdgeEdge{});
   f(PointEdge{});
@@ -215,5 +223,39 @@ constexpr void for_each_separation_kind(F&& f) {
   f(PointEdge2d{});
   f(PointPoint2d{});
 }
+
+/// True for the kinds with a contact rule and volume filter of their own (lib/contact,
+/// lib/filter): those whose description has volume_rows (vertex-face and edge-edge). The
+/// others' contact question is the edge-edge one of the same points (pipeline/methods.hpp).
+template <class Kind, class = void>
+struct HasContactStages : std::false_type {};
+template <class Kind>
+struct HasContactStages<Kind, std::void_t<decltype(Kind::volume_rows)>> : std::true_type {};
+
+/// Calls f(Kind{}) for the kinds of the list with contact stages (HasContactStages), in list
+/// order: the kinds the textbook baselines and the plug-in ABI answer.
+template <class F>
+constexpr void for_each_contact_kind(F&& f) {
+  for_each_kind([&](auto kind) {
+    if constexpr (HasContactStages<decltype(kind)>::value) f(kind);
+  });
+}
+
+/// The number of kinds.
+constexpr int kind_count() {
+  int n = 0;
+  for_each_kind([&](auto) { ++n; });
+  return n;
+}
+
+/// The C API's exactccd_kind values are the kinds' c_kind, 0 .. kind_count() - 1 in the order
+/// of for_each_kind (exactccd.h lists them in that order).
+constexpr bool c_kinds_in_list_order() {
+  int i = 0;
+  bool in_order = true;
+  for_each_kind([&](auto kind) { in_order = in_order && decltype(kind)::c_kind == i++; });
+  return in_order && kind_count() == EXACTCCD_POINT_POINT_2D + 1;
+}
+static_assert(c_kinds_in_list_order(), "exactccd.h's exactccd_kind must list the kinds of kinds::for_each_kind in order");
 
 }  // namespace exactccd::kinds

@@ -14,7 +14,7 @@
 #include <optional>
 
 #include "exactccd/rigid.hpp"
-#include "filter/power_of_two.hpp"
+#include "numeric/power_of_two.hpp"
 #include "rigid/rigid_layout.hpp"
 
 namespace exactccd::rigid {
@@ -24,7 +24,7 @@ template <class Query>
 std::optional<std::pair<Query, double>> normalized(const Query& query, double d) {
   Query q = query;
   bool exact = true;
-  const auto scaled = [&](double v, const filter::UnitScale& unit) {
+  const auto scaled = [&](double v, const numeric::UnitScale& unit) {
     const double r = unit.apply(v);
     if (unit.s < 0 && std::fabs(r) < 0x1p-1022 && std::ldexp(r, -unit.s) != v) exact = false;
     return r;
@@ -38,7 +38,7 @@ std::optional<std::pair<Query, double>> normalized(const Query& query, double d)
   for (const Vec3& p : body_points(q)) note(p);
   double scaled_d = d;
   if (largest > 0) {
-    const filter::UnitScale unit = filter::unit_scale(largest);
+    const numeric::UnitScale unit = numeric::unit_scale(largest);
     const auto vec = [&](Vec3& v) { v = {scaled(v.x, unit), scaled(v.y, unit), scaled(v.z, unit)}; };
     for (RigidPose* p : {&q.a_t0, &q.a_t1, &q.b_t0, &q.b_t1}) vec(p->c);
     set_points(q, vec);
@@ -50,7 +50,7 @@ std::optional<std::pair<Query, double>> normalized(const Query& query, double d)
     double m = 0;
     for (const Quaternion* r : {&t0->q, &t1->q})
       m = std::max(m, std::max(std::max(std::fabs(r->w), std::fabs(r->x)), std::max(std::fabs(r->y), std::fabs(r->z))));
-    const filter::UnitScale unit = filter::unit_scale(m);  // m > 0: valid input
+    const numeric::UnitScale unit = numeric::unit_scale(m);  // m > 0: valid input
     for (Quaternion* r : {&t0->q, &t1->q})
       *r = {scaled(r->w, unit), scaled(r->x, unit), scaled(r->y, unit), scaled(r->z, unit)};
   }

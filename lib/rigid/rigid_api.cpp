@@ -1,9 +1,10 @@
-// The public entry points of rigid queries (include/exactccd/rigid.hpp): the floating-point
-// environment, validation, dispatch to a method.
+// The one entry point (exactccd/ccd.hpp's answer_query) for rigid queries (exactccd/rigid.hpp):
+// the floating-point environment, validation, then the method's stage list (rigid_filter.hpp)
+// or the exact path.
 #include <string>
 
 #include "exactccd/rigid.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "rigid/exact_rigid.hpp"
 #include "rigid/rigid_filter.hpp"
 #include "rigid/rigid_frame.hpp"
@@ -17,12 +18,10 @@ std::string function_name(bool want_toi) {
   return "exactccd::rigid_" + std::string(rigid::kind_of<Query>::function) + (want_toi ? "_toi" : "_ccd");
 }
 
-/// One query by one method: its TOI when want_toi, else an enclosure of it (any interval) on
-/// collision.
 template <class Query>
 std::optional<TimeInterval> answer(const Query& q, const CcdParams& params, Method method, bool want_toi,
                                    StageCounters* counters) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   rigid::validate(q, params, [&] { return function_name<Query>(want_toi); });
   switch (method) {
     case Method::filtered:
@@ -36,31 +35,15 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& params, Meth
 
 }  // namespace
 
-bool rigid_vertex_face_ccd(const RigidVertexFaceQuery& q, const CcdParams& p, Method m) {
-  return answer(q, p, m, false, nullptr).has_value();
+template <>
+std::optional<TimeInterval> answer_query(const RigidVertexFaceQuery& q, const CcdParams& params, Method method,
+                                         bool want_toi, StageCounters* counters) {
+  return answer(q, params, method, want_toi, counters);
 }
-bool rigid_vertex_face_ccd(const RigidVertexFaceQuery& q, const CcdParams& p, Method m, StageCounters& c) {
-  return answer(q, p, m, false, &c).has_value();
-}
-std::optional<TimeInterval> rigid_vertex_face_toi(const RigidVertexFaceQuery& q, const CcdParams& p, Method m) {
-  return answer(q, p, m, true, nullptr);
-}
-std::optional<TimeInterval> rigid_vertex_face_toi(const RigidVertexFaceQuery& q, const CcdParams& p, Method m,
-                                                  StageCounters& c) {
-  return answer(q, p, m, true, &c);
-}
-bool rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& q, const CcdParams& p, Method m) {
-  return answer(q, p, m, false, nullptr).has_value();
-}
-bool rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& q, const CcdParams& p, Method m, StageCounters& c) {
-  return answer(q, p, m, false, &c).has_value();
-}
-std::optional<TimeInterval> rigid_edge_edge_toi(const RigidEdgeEdgeQuery& q, const CcdParams& p, Method m) {
-  return answer(q, p, m, true, nullptr);
-}
-std::optional<TimeInterval> rigid_edge_edge_toi(const RigidEdgeEdgeQuery& q, const CcdParams& p, Method m,
-                                                StageCounters& c) {
-  return answer(q, p, m, true, &c);
+template <>
+std::optional<TimeInterval> answer_query(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method,
+                                         bool want_toi, StageCounters* counters) {
+  return answer(q, params, method, want_toi, counters);
 }
 
 }  // namespace exactccd

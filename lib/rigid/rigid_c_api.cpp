@@ -6,7 +6,7 @@
 
 #include "exactccd/exactccd.h"
 #include "exactccd/rigid.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "rigid/rigid_layout.hpp"
 #include "rigid/validation.hpp"
 
@@ -38,7 +38,7 @@ exactccd_status answer(const double* numbers, double d, double tmax, bool want_t
 exactccd_status rigid_answer(int kind, const double* query, double d, double tmax, bool want_toi, int* collides, double* lo,
                       double* hi) {
   if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const filter::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
+  const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
   if (!(std::isfinite(d) && d >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
   if (kind == EXACTCCD_VERTEX_FACE) return answer<RigidVertexFaceQuery>(query, d, tmax, want_toi, collides, lo, hi);
   if (kind == EXACTCCD_EDGE_EDGE) return answer<RigidEdgeEdgeQuery>(query, d, tmax, want_toi, collides, lo, hi);

@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "exactccd/rigid.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "rigid/swept_box.hpp"
 #include "rigid/validation.hpp"
 #include "scene/box_tree.hpp"
@@ -58,7 +58,7 @@ std::vector<std::array<int, 2>> overlapping(const scene::BoxTree& a, const scene
 }
 
 std::vector<RigidCollision> collisions(const std::vector<RigidBody>& bodies, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   validate(options);
   validate(bodies);
   std::vector<PreparedBody> prepared;

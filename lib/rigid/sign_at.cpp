@@ -5,14 +5,14 @@
 #include <cmath>
 
 #include "contact/polynomial.hpp"
-#include "filter/double_word.hpp"
+#include "numeric/double_word.hpp"
 #include "rigid/positions.hpp"
 #include "separation/separation_terms.hpp"
 
 namespace exactccd::rigid {
 namespace {
 
-namespace dw = filter::double_word;
+namespace dw = numeric::double_word;
 using dw::Approx;
 
 /// Double-double with error bounds at the double t (sign_at.hpp).

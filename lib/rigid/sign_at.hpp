@@ -1,6 +1,6 @@
 // Certified signs at a double time t of the rigid rule's volume V and of a feature pair's
 // distance f (docs/design.md, 9.4), for narrowing a time of impact to adjacent doubles: first in
-// double-double arithmetic with a running error bound (filter/double_word.hpp) on the scaled
+// double-double arithmetic with a running error bound (numeric/double_word.hpp) on the scaled
 // positions (positions.hpp), which almost always decides; exactly in GMP rationals only where it
 // does not (a root exactly at a double, or values below the error bound).
 //

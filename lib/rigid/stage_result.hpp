@@ -1,8 +1,6 @@
-// The result of one filtered stage of a rigid query: decided (collides, with the TOI when the
-// stage certified it, or separate) or undecided. The same shape as the one pipeline protocol of
-// issue 22 (pipeline::Outcome: undecided / collides / separate, the TOI, GMP use); when that
-// protocol lands, these stages return its Outcome and rigid_filter.cpp's stage order becomes a
-// stage list (docs/design.md, 9.4).
+// The result of the rigid interval walks (contact_walk.hpp, separation_walk.hpp): decided
+// (collides, with the TOI when certified, or separate) or undecided, and whether GMP was used.
+// rigid_filter.cpp's IntervalStage turns it into the pipeline's Outcome (docs/design.md, 9.4).
 #pragma once
 
 #include <optional>

@@ -79,7 +79,7 @@ void BoxTree::set_order(std::vector<std::pair<std::uint64_t, int>>& keys, unsign
   const std::size_t leaves = (n + kLeafSize - 1) / kLeafSize;
   first_leaf_ = 1;
   while (static_cast<std::size_t>(first_leaf_) < leaves) first_leaf_ *= 2;
-  nodes_.assign(2 * static_cast<std::size_t>(first_leaf_), empty_box());
+  nodes_.assign(2 * static_cast<std::size_t>(first_leaf_), empty_float_box());
   leaf_boxes_.resize(n);
 }
 
@@ -132,7 +132,7 @@ void BoxTree::fit_nodes(unsigned threads) {
   const std::size_t leaves = (n + kLeafSize - 1) / kLeafSize;
   parallel_ranges(leaves, threads, kGrain / kLeafSize, [&](std::size_t begin, std::size_t end) {
     for (std::size_t g = begin; g < end; ++g) {
-      Box box = leaf_boxes_[g * kLeafSize];
+      FloatBox box = leaf_boxes_[g * kLeafSize];
       for (std::size_t k = g * kLeafSize + 1; k < std::min(n, (g + 1) * kLeafSize); ++k) box = hull(box, leaf_boxes_[k]);
       nodes_[static_cast<std::size_t>(first_leaf_) + g] = box;
     }

@@ -9,20 +9,23 @@
 // Pairs are found by traversing two trees (or one against itself) together, from the node
 // pairs of pair_tasks() (independent pieces of work): each pair of primitives is met once.
 //
-// Exactness: a node box is the hull (exact min and max) of the boxes below it, so two
-// overlapping primitive boxes make every pair of node boxes above them overlap, and
-// pairs_from() reports exactly the primitive pairs whose boxes overlap (the same closed <= test
-// as overlap()), whatever the order is: the order (and a stale one after refit) only changes
-// the speed.
+// Exactness: the tree stores each primitive's box as a float box rounded outwards
+// (float_box.hpp: half the memory), and a node box is the hull (exact min and max) of the float
+// boxes below it; so two overlapping primitive boxes make their float boxes and every pair of
+// node boxes above them overlap, and pairs_from() reports every primitive pair whose boxes
+// overlap, and a few more whose float boxes overlap (the caller tests those on the exact double
+// boxes), whatever the order is: the order (and a stale one after refit) only changes the speed.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "scene/broad_phase.hpp"
+#include "scene/float_box.hpp"
 #include "scene/parallel.hpp"
 
 namespace exactccd::scene {
@@ -53,7 +56,7 @@ class BoxTree {
   void refit(std::size_t n, BoxOf&& box_of, unsigned threads) {
     require_size(n);
     parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) leaf_boxes_[k] = box_of(static_cast<std::size_t>(order_[k]));
+      for (std::size_t k = begin; k < end; ++k) leaf_boxes_[k] = float_box(box_of(static_cast<std::size_t>(order_[k])));
     });
     fit_nodes(threads);
   }
@@ -71,13 +74,15 @@ class BoxTree {
   /// dropped): independent pieces of work for pairs_from().
   std::vector<NodePair> pair_tasks(const BoxTree& other, std::size_t wanted) const;
 
-  /// Calls report(i, j) for every primitive i of this tree and j of `other` whose boxes overlap
-  /// (closed boxes, exact) and which lie below the node pair `task` (from pair_tasks(other));
-  /// when `other` is this tree, every unordered pair i != j once, as (min, max). Each pair of
-  /// the trees is below exactly one task of pair_tasks, so the tasks together report each
-  /// overlapping pair exactly once (in no particular order).
+  /// Calls report(i, j) for every primitive i of this tree and j of `other` whose float boxes
+  /// overlap (closed; every pair whose boxes overlap, and a few more: the caller tests the
+  /// exact boxes) and which lie below the node pair `task` (from pair_tasks(other)); when
+  /// `other` is this tree, every unordered pair i != j once, as (min, max). Each pair of the
+  /// trees is below exactly one task of pair_tasks, so the tasks together report each pair
+  /// exactly once (in no particular order). A report returning bool stops the
+  /// traversal by returning false; pairs_from then returns false (else true).
   template <class Report>
-  void pairs_from(const BoxTree& other, NodePair task, Report&& report) const {
+  bool pairs_from(const BoxTree& other, NodePair task, Report&& report) const {
     const bool self = &other == this;
     NodePair stack[kPairStack];
     int top = 0;
@@ -87,7 +92,7 @@ class BoxTree {
       if (!overlap(nodes_[a], other.nodes_[b])) continue;
       const bool leaf_a = a >= first_leaf_, leaf_b = b >= other.first_leaf_;
       if (leaf_a && leaf_b) {
-        leaf_pairs(other, a, b, self, report);
+        if (!leaf_pairs(other, a, b, self, report)) return false;
       } else if (self && a == b) {  // same depth: both internal
         stack[top++] = {2 * a, 2 * a};
         stack[top++] = {2 * a, 2 * a + 1};
@@ -103,6 +108,7 @@ class BoxTree {
           for (int cb = 2 * b; cb <= 2 * b + 1; ++cb) stack[top++] = {ca, cb};
       }
     }
+    return true;
   }
 
  private:
@@ -114,9 +120,10 @@ class BoxTree {
   static constexpr int kPairStack = 192;
 
   /// The overlapping primitive pairs of leaf node a of this tree and leaf node b of `other`
-  /// (self: same tree, each unordered pair once as (min, max), none with itself).
+  /// (self: same tree, each unordered pair once as (min, max), none with itself); false when
+  /// the report stopped the traversal.
   template <class Report>
-  void leaf_pairs(const BoxTree& other, int a, int b, bool self, Report& report) const {
+  bool leaf_pairs(const BoxTree& other, int a, int b, bool self, Report& report) const {
     const int begin_a = (a - first_leaf_) * kLeafSize, end_a = std::min(begin_a + kLeafSize, size());
     const int begin_b = (b - other.first_leaf_) * kLeafSize, end_b = std::min(begin_b + kLeafSize, other.size());
     // Only the boxes of each leaf that overlap the other leaf's box can be in a pair (it is the
@@ -128,18 +135,27 @@ class BoxTree {
       if (overlap(other.leaf_boxes_[l], nodes_[a])) cols[n_cols++] = l;
     for (int r = 0; r < n_rows; ++r) {
       const int k = rows[r];
-      const Box& box = leaf_boxes_[k];
+      const FloatBox& box = leaf_boxes_[k];
       const int i = order_[k];
       for (int c = 0; c < n_cols; ++c) {
         const int l = cols[c];
         if (self && a == b && l <= k) continue;
         if (!overlap(box, other.leaf_boxes_[l])) continue;
         const int j = other.order_[l];
-        if (self)
-          report(std::min(i, j), std::max(i, j));
-        else
-          report(i, j);
+        if (!(self ? go_on(report, std::min(i, j), std::max(i, j)) : go_on(report, i, j))) return false;
       }
+    }
+    return true;
+  }
+
+  /// report(i, j), and whether to go on (a report returning void always goes on).
+  template <class Report>
+  static bool go_on(Report& report, int i, int j) {
+    if constexpr (std::is_void_v<std::invoke_result_t<Report&, int, int>>) {
+      report(i, j);
+      return true;
+    } else {
+      return report(i, j);
     }
   }
 
@@ -164,8 +180,8 @@ class BoxTree {
   void fit_nodes(unsigned threads);
 
   std::vector<int> order_;       ///< primitive indices in leaf order
-  std::vector<Box> leaf_boxes_;  ///< the primitives' boxes in leaf order
-  std::vector<Box> nodes_;       ///< node boxes, index 1..2 * first_leaf_ - 1 (0 unused)
+  std::vector<FloatBox> leaf_boxes_;  ///< the primitives' boxes in leaf order (float_box)
+  std::vector<FloatBox> nodes_;       ///< node boxes, index 1..2 * first_leaf_ - 1 (0 unused)
   int first_leaf_ = 1;           ///< the index of the first leaf node (a power of two)
 };
 

@@ -51,15 +51,6 @@ BroadPhaseTrees::BroadPhaseTrees(const std::vector<Triangle>& triangles, const s
                                  const std::vector<int>& vertices, const std::vector<int>& points)
     : triangles_(triangles), edges_(edges), vertices_(vertices), points_(points) {}
 
-Box BroadPhaseTrees::triangle_box(std::size_t t) const {
-  const Triangle& tri = triangles_[t];
-  return hull(hull(vertex_boxes_[tri[0]], vertex_boxes_[tri[1]]), vertex_boxes_[tri[2]]);
-}
-
-Box BroadPhaseTrees::edge_box(std::size_t e) const {
-  return hull(vertex_boxes_[edges_[e][0]], vertex_boxes_[edges_[e][1]]);
-}
-
 void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   if (built_ && vertex_boxes.size() != vertex_boxes_.size())
     throw std::invalid_argument("BroadPhaseTrees::fit: the number of vertices changed");
@@ -82,9 +73,26 @@ void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   }
 }
 
+std::vector<PairTask> BroadPhaseTrees::pair_tasks(unsigned threads) const {
+  if (!built_) throw std::logic_error("BroadPhaseTrees::pair_tasks before fit");
+  const std::size_t wanted = threads > 1 ? kTasksPerThread * threads : 1;
+  std::vector<PairTask> tasks;
+  const auto add = [&](CollisionKind kind, const BoxTree& a, const BoxTree& b) {
+    for (const BoxTree::NodePair& nodes : a.pair_tasks(b, wanted)) tasks.push_back({kind, nodes});
+  };
+  // The largest kind first: the dynamic hand-out then ends on small pieces.
+  add(CollisionKind::edge_edge, edge_tree_, edge_tree_);
+  if (!triangles_.empty()) add(CollisionKind::vertex_face, vertex_tree_, triangle_tree_);
+  if (!points_.empty()) {
+    add(CollisionKind::point_edge, point_tree_, edge_tree_);
+    add(CollisionKind::point_point, point_tree_, point_tree_);
+  }
+  return tasks;
+}
+
 Candidates BroadPhaseTrees::candidates(unsigned threads) const {
   if (!built_) throw std::logic_error("BroadPhaseTrees::candidates before fit");
-  const auto any = [](int, int) { return true; };
+  // The trees report the pairs whose float boxes overlap: each kept only when its exact boxes do.
   Candidates c;
   if (!triangles_.empty())
     c.vertex_face = tree_pairs(
@@ -92,7 +100,8 @@ Candidates BroadPhaseTrees::candidates(unsigned threads) const {
         [&](int i, int t) {
           const int v = vertices_[static_cast<std::size_t>(i)];
           const Triangle& tri = triangles_[static_cast<std::size_t>(t)];
-          return tri[0] != v && tri[1] != v && tri[2] != v;
+          return tri[0] != v && tri[1] != v && tri[2] != v &&
+                 overlap(vertex_boxes_[static_cast<std::size_t>(v)], triangle_box(static_cast<std::size_t>(t)));
         },
         [&](int i, int t) { return std::array<int, 2>{vertices_[static_cast<std::size_t>(i)], t}; });
   c.edge_edge = tree_pairs(
@@ -100,16 +109,25 @@ Candidates BroadPhaseTrees::candidates(unsigned threads) const {
       [&](int i, int j) {
         const Edge& a = edges_[static_cast<std::size_t>(i)];
         const Edge& b = edges_[static_cast<std::size_t>(j)];
-        return a[0] != b[0] && a[0] != b[1] && a[1] != b[0] && a[1] != b[1];
+        return a[0] != b[0] && a[0] != b[1] && a[1] != b[0] && a[1] != b[1] &&
+               overlap(edge_box(static_cast<std::size_t>(i)), edge_box(static_cast<std::size_t>(j)));
       },
       [](int i, int j) { return std::array<int, 2>{i, j}; });  // i < j
   if (!points_.empty()) {
     // Isolated points are on no edge and distinct: no pair shares a vertex. Points ascending,
     // so {points_[i], points_[j]} with i < j is ascending too.
     const auto point_of = [&](int i) { return points_[static_cast<std::size_t>(i)]; };
-    c.point_edge = tree_pairs(point_tree_, edge_tree_, threads, any,
+    c.point_edge = tree_pairs(
+        point_tree_, edge_tree_, threads,
+        [&](int i, int e) {
+          return overlap(point_box(static_cast<std::size_t>(i)), edge_box(static_cast<std::size_t>(e)));
+        },
                               [&](int i, int e) { return std::array<int, 2>{point_of(i), e}; });
-    c.point_point = tree_pairs(point_tree_, point_tree_, threads, any,
+    c.point_point = tree_pairs(
+        point_tree_, point_tree_, threads,
+        [&](int i, int j) {
+          return overlap(point_box(static_cast<std::size_t>(i)), point_box(static_cast<std::size_t>(j)));
+        },
                                [&](int i, int j) { return std::array<int, 2>{point_of(i), point_of(j)}; });
   }
   return c;

@@ -3,14 +3,16 @@
 // scene functions run over their broad phase's candidates.
 #include "exactccd/candidates.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <stdexcept>
 #include <string>
 
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "scene/narrow_phase.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
+#include "scene/time_bounds.hpp"
 
 namespace exactccd {
 namespace {
@@ -68,13 +70,73 @@ void require_valid_rows(const std::vector<std::array<int, N>>& rows, std::size_t
   }
 }
 
+/// Whether a row's indices are in [0, n) and each side's (its first F indices, the others)
+/// distinct: no degenerate element.
+template <std::size_t F, std::size_t N>
+bool valid_sides(const std::array<int, N>& row, std::size_t n) {
+  bool ok = true;
+  for (std::size_t i = 0; i < N; ++i) {
+    ok &= row[i] >= 0 && static_cast<std::size_t>(row[i]) < n;
+    for (std::size_t j = i < F ? 0 : F; j < i; ++j) ok &= row[i] != row[j];
+  }
+  return ok;
+}
+
+/// Whether the two sides of a row (its first F indices, the others) share no index.
+template <std::size_t F, std::size_t N>
+bool disjoint_sides(const std::array<int, N>& row) {
+  bool ok = true;
+  for (std::size_t i = F; i < N; ++i)
+    for (std::size_t j = 0; j < F; ++j) ok &= row[i] != row[j];
+  return ok;
+}
+
+/// Whether the boxes over [0, tmax] grown by d of a row's two sides (its first F indices, the
+/// others) are disjoint: the broad phase's test bound for bound (vertex_boxes: the exact swept
+/// boxes for tmax = 1, add_vertex_until's certified ones otherwise; inflated(), which commutes
+/// with the hull), so a pair within d in [0, tmax] never has disjoint boxes. Written out for
+/// the row's fixed size: on a caller's list, most candidates end here.
+template <std::size_t F, std::size_t N>
+bool disjoint_boxes(const std::array<int, N>& row, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
+                    const CcdParams& params) {
+  if (params.tmax == 1 && !(params.min_distance > 0)) {  // the contact question: min and max only
+    const auto side_box = [&](std::size_t begin, std::size_t end) {
+      const Vec3 &a = x0[static_cast<std::size_t>(row[begin])], &b = x1[static_cast<std::size_t>(row[begin])];
+      scene::Box box{{{std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}},
+                     {{std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}}};
+      for (std::size_t i = begin + 1; i < end; ++i)
+        scene::add_vertex(box, x0[static_cast<std::size_t>(row[i])], x1[static_cast<std::size_t>(row[i])]);
+      return box;
+    };
+    return !scene::overlap(side_box(0, F), side_box(F, N));
+  }
+  scene::Box box[2];
+  for (std::size_t s = 0; s < 2; ++s) box[s] = scene::empty_box();
+  for (std::size_t i = 0; i < N; ++i) {
+    const Vec3 &a = x0[static_cast<std::size_t>(row[i])], &b = x1[static_cast<std::size_t>(row[i])];
+    if (params.tmax == 1)
+      scene::add_vertex(box[i < F ? 0 : 1], a, b);
+    else
+      scene::add_vertex_until(box[i < F ? 0 : 1], a, b, params.tmax);
+  }
+  if (params.min_distance > 0)
+    for (scene::Box& b : box) b = scene::inflated(b, params.min_distance);
+  return !scene::overlap(box[0], box[1]);
+}
+
 /// A CandidateSet as one range of the shared narrow phase, the kinds' lists one after the other
-/// in CollisionKind order.
+/// in CollisionKind order, each candidate checked as it is read (read(): indices and sides,
+/// the box test, shared indices) against the positions.
 struct CandidateSetRange {
   const CandidateSet& set;
+  const std::vector<Vec3>& x0;
+  const std::vector<Vec3>& x1;
+  CcdParams params;
   std::array<std::size_t, 5> offsets{};
 
-  explicit CandidateSetRange(const CandidateSet& s) : set(s) {
+  CandidateSetRange(const CandidateSet& s, const std::vector<Vec3>& p0, const std::vector<Vec3>& p1,
+                    const CcdParams& q)
+      : set(s), x0(p0), x1(p1), params(q) {
     offsets[1] = set.vertex_face.size();
     offsets[2] = offsets[1] + set.edge_edge.size();
     offsets[3] = offsets[2] + set.point_edge.size();
@@ -90,16 +152,28 @@ struct CandidateSetRange {
     return i;
   }
 
-  /// Candidate k as two sides of vertices.
-  PairSides pair(std::size_t k) const {
+  /// Reads candidate k: invalid (an index out of range, a degenerate side, sides sharing an
+  /// index), disjoint boxes, or its two sides in r.
+  scene::CandidateRead read(std::size_t k, PairSides& r) const {
     const std::size_t i = list_of(k), j = k - offsets[i];
     switch (i) {
-      case 0: return sides_of(kKinds[0], set.vertex_face[j], kFirstSide[0]);
-      case 1: return sides_of(kKinds[1], set.edge_edge[j], kFirstSide[1]);
-      case 2: return sides_of(kKinds[2], set.point_edge[j], kFirstSide[2]);
+      case 0: return read_row<1>(set.vertex_face[j], 0, r);
+      case 1: return read_row<2>(set.edge_edge[j], 1, r);
+      case 2: return read_row<1>(set.point_edge[j], 2, r);
       default: break;
     }
-    return sides_of(kKinds[3], set.point_point[j], kFirstSide[3]);
+    return read_row<1>(set.point_point[j], 3, r);
+  }
+
+  template <std::size_t F, std::size_t N>
+  scene::CandidateRead read_row(const std::array<int, N>& row, std::size_t list, PairSides& r) const {
+    if (!valid_sides<F>(row, x0.size())) return scene::CandidateRead::invalid;
+    // Sides sharing a vertex always have overlapping boxes (both hold its position at t = 0),
+    // so a row found disjoint shares none: the check of shared indices can wait until here.
+    if (disjoint_boxes<F>(row, x0, x1, params)) return scene::CandidateRead::disjoint;
+    if (!disjoint_sides<F>(row)) return scene::CandidateRead::invalid;
+    r = sides_of(kKinds[list], row, static_cast<int>(F));
+    return scene::CandidateRead::pair;
   }
 
   /// Candidate k as a CandidateCollision with the given time of impact.
@@ -109,12 +183,24 @@ struct CandidateSetRange {
   }
 };
 
-/// The validated question {d, tmax} of the options, after the input.
-CcdParams checked(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const CandidateSet& candidates,
-                  const SceneOptions& options) {
+/// The validated question {d, tmax} of the options, after the positions (sizes, finite
+/// coordinates: validate() of no candidates); the rows are checked as they are decided.
+CcdParams checked_positions(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const SceneOptions& options) {
   validate(options);
-  validate(x0, x1, candidates);
+  validate(x0, x1, CandidateSet{});
   return {options.min_distance, options.tmax};
+}
+
+/// Hands every candidate to the question on options.threads threads (decide_checked_range:
+/// each row checked as it is read, then its boxes, then the question's arithmetic); when the
+/// loop stopped early, validates every row, so that an invalid one is reported (thrown) and
+/// never answered.
+template <class Question>
+void decide(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const CandidateSet& candidates,
+            const SceneOptions& options, Question& question) {
+  const CandidateSetRange range(candidates, x0, x1, {options.min_distance, options.tmax});
+  if (!scene::decide_checked_range(range, scene::resolve_threads(options.threads), question))
+    validate(x0, x1, candidates);
 }
 
 }  // namespace
@@ -170,37 +256,44 @@ void validate(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& po
 std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positions_t0,
                                                 const std::vector<Vec3>& positions_t1,
                                                 const CandidateSet& candidates, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
-  const CandidateSetRange range(candidates);
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
+  scene::CollectCollisions<Vec3, std::size_t> question(tests, scene::resolve_threads(options.threads),
+                                                      /*boxes_checked=*/true);
+  decide(positions_t0, positions_t1, candidates, options, question);
+  auto found = question.take();
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const CandidateSetRange range(candidates, positions_t0, positions_t1, params);
   std::vector<CandidateCollision> all;
-  for (const auto& [k, toi] : scene::colliding_pairs(range, tests, scene::resolve_threads(options.threads)))
-    all.push_back(range.collision(k, toi));
+  all.reserve(found.size());
+  for (const auto& [k, toi] : found) all.push_back(range.collision(k, toi));
   return all;  // ascending k: by kind, then by position in the kind's list
 }
 
 std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                                          const CandidateSet& candidates, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
-  const CandidateSetRange range(candidates);
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
-  return scene::earliest_pair_toi(range, tests, scene::resolve_threads(options.threads));
+  scene::EarliestCollision<Vec3> question(tests, scene::resolve_threads(options.threads), /*boxes_checked=*/true);
+  decide(positions_t0, positions_t1, candidates, options, question);
+  return question.result();
 }
 
 std::optional<TimeInterval> earliest_toi(const std::vector<CandidateCollision>& collisions) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   return scene::earliest_of(collisions);
 }
 
 bool is_collision_free(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                        const CandidateSet& candidates, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  const CcdParams params = checked(positions_t0, positions_t1, candidates, options);
-  const CandidateSetRange range(candidates);
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
-  return !scene::any_pair_collides(range, tests, scene::resolve_threads(options.threads));
+  scene::AnyCollision<Vec3> question(tests, /*boxes_checked=*/true);
+  decide(positions_t0, positions_t1, candidates, options, question);
+  return !question.hit();
 }
 
 double max_collision_free_step(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,

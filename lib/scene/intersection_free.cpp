@@ -14,11 +14,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
+#include <atomic>
 #include <variant>
 
 #include "exactccd/scene.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
+#include "scene/box_tree.hpp"
 #include "scene/broad_phase.hpp"
+#include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
 
 namespace exactccd {
@@ -81,27 +84,53 @@ int shared_vertices(const std::array<int, 3>& s, const std::array<int, 3>& t, in
 }  // namespace
 
 bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles) {
-  const filter::DefaultFpEnvironment fp_environment;  // CGAL's static filters need it too
+  return intersection_free(positions, triangles, 1);
+}
+
+// The pairs of triangles whose boxes overlap come from a bounding volume hierarchy over the
+// triangles' boxes traversed against itself (scene/box_tree.hpp: every overlapping pair once,
+// among a few more whose outward-rounded float boxes overlap, dropped by the exact test), in pieces handed out to the threads, and are decided as
+// they are found: nothing is listed, and the first intersecting pair stops every thread.
+bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
+                       unsigned threads) {
+  const numeric::DefaultFpEnvironment fp_environment;  // CGAL's static filters need it too
   scene::require_finite_positions(positions, "positions");
   scene::require_valid_triangles(triangles, positions.size());
+  threads = scene::resolve_threads(threads);
   std::vector<Point> points(positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i) points[i] = point(positions[i]);
-  std::vector<Simplex> hulls;
-  hulls.reserve(triangles.size());
-  for (const auto& t : triangles) hulls.push_back(hull(points[t[0]], points[t[1]], points[t[2]]));
+  std::vector<Simplex> hulls(triangles.size());
+  scene::parallel_ranges(triangles.size(), threads, std::size_t{1} << 12, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) hulls[t] = hull(points[triangles[t][0]], points[triangles[t][1]], points[triangles[t][2]]);
+  });
   // The edge of triangle t opposite its corner i.
   const auto opposite = [&](const std::array<int, 3>& t, int i) {
     return hull(points[t[(i + 1) % 3]], points[t[(i + 2) % 3]]);
   };
-  for (const auto& [i, j] : scene::overlapping_triangle_pairs(positions, triangles)) {
+  // Whether triangles i and j meet where they must not.
+  const auto meet = [&](int i, int j) {
     int corner_i = 0, corner_j = 0;
     const int shared = shared_vertices(triangles[i], triangles[j], corner_i, corner_j);
-    if (shared == 0 && meets(hulls[i], hulls[j])) return false;
-    if (shared == 1 && (meets(opposite(triangles[i], corner_i), hulls[j]) ||
-                        meets(opposite(triangles[j], corner_j), hulls[i])))
-      return false;
-  }
-  return true;
+    if (shared == 0) return meets(hulls[i], hulls[j]);
+    return shared == 1 && (meets(opposite(triangles[i], corner_i), hulls[j]) ||
+                           meets(opposite(triangles[j], corner_j), hulls[i]));
+  };
+  const auto box_of = [&](std::size_t t) { return scene::swept_box(positions, positions, triangles[t].data(), 3); };
+  scene::BoxTree tree;
+  tree.build(triangles.size(), box_of, threads);
+  std::atomic<bool> found{false};
+  const auto tasks = tree.pair_tasks(tree, threads > 1 ? 32 * std::size_t{threads} : 1);
+  scene::parallel_chunks(tasks.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t k = begin; k < end && !found.load(std::memory_order_relaxed); ++k)
+      tree.pairs_from(tree, tasks[k], [&](int i, int j) {
+        if (found.load(std::memory_order_relaxed)) return false;
+        if (scene::overlap(box_of(static_cast<std::size_t>(i)), box_of(static_cast<std::size_t>(j))) && meet(i, j))
+          found = true;
+        return !found.load(std::memory_order_relaxed);
+      });
+    return !found.load(std::memory_order_relaxed);
+  });
+  return !found.load();
 }
 
 }  // namespace exactccd

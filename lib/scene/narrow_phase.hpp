@@ -1,13 +1,10 @@
-// The narrow phase over a range of candidate pairs, shared by the scene functions
-// (scene_ccd.cpp: the candidates of the scene's broad phase) and the batch functions over the
-// caller's own candidates (candidates_ccd.cpp, exactccd/candidates.hpp): every pair decided by
-// the exact primitive queries of exactccd/ccd.hpp with CcdParams{min_distance, tmax}, on
-// several threads (parallel.hpp), with the early exit and the time pruning of earliest_toi.
-//
-// A range of candidates is any type with
-//   std::size_t size() const;           // the number of candidates
-//   PairSides pair(std::size_t k) const; // candidate k: its kind and its two sides of vertices
-// whose candidates are in the order of the results (colliding_pairs returns them by k).
+// The narrow phase, shared by the scene functions (streamed_step.cpp: the pairs of the scene's
+// broad phase as they are found) and the batch functions over the caller's own candidates
+// (candidates_ccd.cpp, exactccd/candidates.hpp): every pair decided by the exact primitive
+// queries of exactccd/ccd.hpp with CcdParams{min_distance, tmax}, as one of three questions
+// (CollectCollisions, EarliestCollision with its shrinking time window, AnyCollision) that take
+// the pairs one at a time on any worker; decide_checked_range hands a caller's list over on
+// several threads (parallel.hpp).
 #pragma once
 
 #include <algorithm>
@@ -100,6 +97,20 @@ class PairTests {
     return with_query(r, [&](const auto& q) { return exactccd::ccd(q, params_); });
   }
 
+  /// Whether the boxes of the pair's two primitives over [0, tmax], grown by d, overlap: the
+  /// broad phase's box test, bound for bound (the exact swept boxes when tmax = 1, else
+  /// add_vertex_until's certified ones; inflated(), which commutes with the hull); false proves
+  /// that the pair is not within d anywhere in [0, tmax].
+  bool boxes_overlap(const PairSides& r) const {
+    if (params_.tmax < 1) return may_touch_until(r, params_.tmax);
+    Box a = swept_box_of(r.side[0]), b = swept_box_of(r.side[1]);
+    if (params_.min_distance > 0) {
+      a = inflated(a, params_.min_distance);
+      b = inflated(b, params_.min_distance);
+    }
+    return overlap(a, b);
+  }
+
   /// Whether the boxes of the pair's two primitives over the times [0, h] (h in [0, 1]), grown
   /// by d, overlap; false proves that the pair is not within d anywhere in [0, h].
   bool may_touch_until(const PairSides& r, double h) const {
@@ -130,6 +141,15 @@ class PairTests {
   }
 
  private:
+  /// The exact swept box over [0, 1] of a side's vertices (min and max of input coordinates).
+  Box swept_box_of(const Side& side) const {
+    const Vec3 p = lift(x0_[side.v[0]]), q = lift(x1_[side.v[0]]);
+    Box box{{{p.x < q.x ? p.x : q.x, p.y < q.y ? p.y : q.y, p.z < q.z ? p.z : q.z}},
+            {{p.x < q.x ? q.x : p.x, p.y < q.y ? q.y : p.y, p.z < q.z ? q.z : p.z}}};
+    for (int i = 1; i < side.n; ++i) add_vertex(box, lift(x0_[side.v[i]]), lift(x1_[side.v[i]]));
+    return box;
+  }
+
   const std::vector<Point>& x0_;
   const std::vector<Point>& x1_;
   CcdParams params_;
@@ -142,8 +162,6 @@ inline bool earlier(const TimeInterval& a, const TimeInterval& b) {
   return a.lo < b.lo || (a.lo == b.lo && a.hi < b.hi);
 }
 
-/// Every colliding candidate of the range with its time of impact, as {k, toi}, ascending in k,
-/// on `threads` threads (the result does not depend on their number).
 /// The earliest TOI (in the order `earlier`) of found collisions (anything with a `toi`
 /// member), or none: the scene's and the batch call's earliest_toi(collisions).
 template <class Collision>
@@ -154,70 +172,149 @@ std::optional<TimeInterval> earliest_of(const std::vector<Collision>& collisions
   return best;
 }
 
-template <class Point, class Range>
-std::vector<std::pair<std::size_t, TimeInterval>> colliding_pairs(const Range& range, const PairTests<Point>& tests,
-                                                                  unsigned threads) {
-  std::vector<std::vector<std::pair<std::size_t, TimeInterval>>> found(threads);
-  parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
-    for (std::size_t k = begin; k < end; ++k)
-      if (const auto toi = tests.toi(range.pair(k))) found[w].emplace_back(k, *toi);
-    return true;
-  });
-  std::vector<std::pair<std::size_t, TimeInterval>> all;
-  for (auto& f : found) all.insert(all.end(), f.begin(), f.end());
-  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  return all;
-}
+// The three questions of the narrow phase, each deciding pairs one at a time as a broad phase
+// (pair_stream.hpp) or a caller's candidate list hands them over, on any worker: call(r, id, w)
+// returns false when nothing more needs deciding. `boxes_checked`: whether every pair handed
+// over is known to have overlapping boxes over [0, tmax] grown by d (the scene's broad phase
+// found it so); otherwise that box test comes first, so that a pair whose boxes do not overlap
+// costs the box test and nothing more (exact: the boxes hold the motion, boxes_overlap()).
 
-/// The earliest time of impact over the range's candidates (the tightest double interval
-/// holding the exact earliest time), or std::nullopt when none collides; on `threads` threads,
-/// pruning by time (see the loop) and stopping at a collision at t = 0. The result does not
-/// depend on the number of threads.
-template <class Point, class Range>
-std::optional<TimeInterval> earliest_pair_toi(const Range& range, const PairTests<Point>& tests, unsigned threads) {
+/// find_collisions: every colliding pair with its time of impact, as {id, toi}, per worker.
+template <class Point, class Id>
+class CollectCollisions {
+ public:
+  CollectCollisions(const PairTests<Point>& tests, unsigned threads, bool boxes_checked)
+      : tests_(tests), found_(threads), boxes_checked_(boxes_checked) {}
+
+  bool operator()(const PairSides& r, const Id& id, unsigned worker) {
+    if (!boxes_checked_ && !tests_.boxes_overlap(r)) return true;
+    if (const auto toi = tests_.toi(r)) found_[worker].emplace_back(id, *toi);
+    return true;
+  }
+
+  /// Every colliding pair found, in no particular order.
+  std::vector<std::pair<Id, TimeInterval>> take() {
+    std::size_t n = 0;
+    for (const auto& f : found_) n += f.size();
+    std::vector<std::pair<Id, TimeInterval>> all;
+    all.reserve(n);
+    for (auto& f : found_) {
+      all.insert(all.end(), f.begin(), f.end());
+      std::vector<std::pair<Id, TimeInterval>>().swap(f);
+    }
+    return all;
+  }
+
+ private:
+  const PairTests<Point>& tests_;
+  std::vector<std::vector<std::pair<Id, TimeInterval>>> found_;
+  bool boxes_checked_;
+};
+
+/// earliest_toi: the earliest time of impact (the tightest double interval holding the exact
+/// earliest time), pruning by time as it goes and stopping at a collision at t = 0; the result
+/// does not depend on the order the pairs come in nor on the number of workers.
+template <class Point>
+class EarliestCollision {
+ public:
+  EarliestCollision(const PairTests<Point>& tests, unsigned threads, bool boxes_checked)
+      : tests_(tests), best_(threads), boxes_checked_(boxes_checked) {}
+
   // `bound`: the smallest hi of a collision found by any worker. A pair with no collision in
   // [0, bound] has its time t > bound >= (that collision's time), so its tightest enclosure
   // comes strictly later in the order `earlier`: skipping it cannot change the result, whichever
-  // worker found what first. The result is the same for any number of threads.
-  std::atomic<double> bound{std::numeric_limits<double>::infinity()};
-  std::vector<std::optional<TimeInterval>> best(threads);
+  // worker found what first.
+  template <class Id>
+  bool operator()(const PairSides& r, const Id&, unsigned worker) {
+    // Cheapest first: boxes over [0, h] grown by d (h >= tmax: the broad phase's boxes over
+    // [0, tmax]); whether the pair collides at all (a miss is mostly decided by the static
+    // filter in ~20 ns); whether its points can be coplanar before h (interval arithmetic on
+    // the volume cubic; contact pairs at d = 0 only); only then the time of impact, whose
+    // refinement to adjacent doubles costs microseconds.
+    const double h = bound_.load(std::memory_order_relaxed);
+    if (h < tests_.params().tmax) {
+      if (!tests_.may_touch_until(r, h)) return true;
+      if (!tests_.collides(r) || tests_.never_coplanar_until(r, h)) return true;
+    } else if (!boxes_checked_ && !tests_.boxes_overlap(r)) {
+      return true;
+    }
+    const auto toi = tests_.toi(r);  // std::nullopt when the query does not collide
+    if (!toi) return true;
+    std::optional<TimeInterval>& best = best_[worker];
+    if (!best || earlier(*toi, *best)) best = toi;
+    for (double current = bound_.load(); toi->hi < current && !bound_.compare_exchange_weak(current, toi->hi);) {
+    }
+    return toi->hi != 0;  // a collision exactly at t = 0: nothing is earlier
+  }
+
+  /// The earliest time of impact of every pair decided, or std::nullopt.
+  std::optional<TimeInterval> result() const {
+    std::optional<TimeInterval> result;
+    for (const auto& b : best_)
+      if (b && (!result || earlier(*b, *result))) result = b;
+    return result;
+  }
+
+ private:
+  const PairTests<Point>& tests_;
+  std::atomic<double> bound_{std::numeric_limits<double>::infinity()};
+  std::vector<std::optional<TimeInterval>> best_;
+  bool boxes_checked_;
+};
+
+/// is_collision_free: whether some pair collides, stopping at the first one found.
+template <class Point>
+class AnyCollision {
+ public:
+  AnyCollision(const PairTests<Point>& tests, bool boxes_checked) : tests_(tests), boxes_checked_(boxes_checked) {}
+
+  template <class Id>
+  bool operator()(const PairSides& r, const Id&, unsigned) {
+    if (hit_.load(std::memory_order_relaxed)) return false;
+    if (!boxes_checked_ && !tests_.boxes_overlap(r)) return true;
+    if (tests_.collides(r)) hit_ = true;
+    return !hit_.load(std::memory_order_relaxed);
+  }
+
+  /// Whether a colliding pair was found.
+  bool hit() const { return hit_.load(); }
+
+ private:
+  const PairTests<Point>& tests_;
+  std::atomic<bool> hit_{false};
+  bool boxes_checked_;
+};
+
+/// What reading one candidate of a checked range gives.
+enum class CandidateRead {
+  invalid,   ///< the candidate is malformed (stop: the caller reports it)
+  disjoint,  ///< its boxes over [0, tmax] grown by d do not overlap: it cannot collide
+  pair,      ///< its two sides, to decide
+};
+
+/// Hands every candidate k of a range to the question, question(r, k, worker), on `threads`
+/// threads in chunks of kNarrowPhaseChunk, until it returns false. The range has size() and
+/// CandidateRead read(k, PairSides& r), which checks candidate k as it is read and does the box
+/// test (so the question is asked with boxes_checked). An invalid candidate stops the loop. Returns true
+/// when every candidate was read and valid, false when the loop stopped early (a question's
+/// early exit or an invalid candidate: the caller then validates the whole range, so that bad
+/// input is reported, never answered).
+template <class Range, class Question>
+bool decide_checked_range(const Range& range, unsigned threads, Question& question) {
+  std::atomic<bool> stopped{false};
   parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
+    PairSides r;
     for (std::size_t k = begin; k < end; ++k) {
-      // Cheapest first: boxes over [0, h] grown by d (with h >= 1 they are the swept boxes,
-      // which a broad phase found overlapping); whether the pair collides at all (a miss is
-      // mostly decided by the static filter in ~20 ns); whether its points can be coplanar
-      // before h (interval arithmetic on the volume cubic; contact pairs at d = 0 only);
-      // only then the time of impact, whose refinement to adjacent doubles costs microseconds.
-      const PairSides r = range.pair(k);
-      const double h = bound.load(std::memory_order_relaxed);
-      if (h < 1 && !tests.may_touch_until(r, h)) continue;
-      if (h < 1 && (!tests.collides(r) || tests.never_coplanar_until(r, h))) continue;
-      const auto toi = tests.toi(r);  // std::nullopt when the query does not collide
-      if (!toi) continue;
-      if (!best[w] || earlier(*toi, *best[w])) best[w] = toi;
-      for (double current = bound.load(); toi->hi < current && !bound.compare_exchange_weak(current, toi->hi);) {
+      const CandidateRead read = range.read(k, r);
+      if (read == CandidateRead::disjoint) continue;
+      if (read == CandidateRead::invalid || !question(r, k, w)) {
+        stopped = true;
+        return false;
       }
-      if (toi->hi == 0) return false;  // a collision exactly at t = 0: nothing is earlier
     }
     return true;
   });
-  std::optional<TimeInterval> result;
-  for (const auto& b : best)
-    if (b && (!result || earlier(*b, *result))) result = b;
-  return result;
-}
-
-/// Whether some candidate of the range collides; on `threads` threads, stopping at the first
-/// collision found.
-template <class Point, class Range>
-bool any_pair_collides(const Range& range, const PairTests<Point>& tests, unsigned threads) {
-  std::atomic<bool> hit{false};
-  parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-    for (std::size_t k = begin; k < end && !hit.load(std::memory_order_relaxed); ++k)
-      if (tests.collides(range.pair(k))) hit = true;
-    return !hit.load(std::memory_order_relaxed);
-  });
-  return hit;
+  return !stopped.load();
 }
 
 }  // namespace exactccd::scene

@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 
 namespace exactccd::scene {
 
@@ -45,7 +45,7 @@ unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Bod
   const auto work = [&](unsigned worker) {
     // A new thread inherits its creator's floating-point environment: establish the default
     // one in every worker (a no-op on the calling thread, whose entry point already did).
-    const filter::DefaultFpEnvironment fp_environment;
+    const numeric::DefaultFpEnvironment fp_environment;
     try {
       for (std::size_t c; !stop.load(std::memory_order_relaxed) && (c = next.fetch_add(1)) < chunks;) {
         const std::size_t begin = c * chunk, end = std::min(n, begin + chunk);

@@ -1,43 +1,41 @@
 // exactccd::SceneBroadPhase (exactccd/scene.hpp): the scene's topology, vertex boxes and
-// bounding volume hierarchies (candidate_finder.hpp) kept across calls; update() refits.
+// bounding volume hierarchies (streamed_step.hpp's SceneTrees) kept across calls; update()
+// refits; the scene functions stream the trees' pairs into the narrow phase.
+#include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "exactccd/scene.hpp"
-#include "filter/fp_environment.hpp"
-#include "scene/candidate_finder.hpp"
+#include "numeric/fp_environment.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
+#include "scene/streamed_step.hpp"
 
 namespace exactccd {
 
 /// Everything kept across calls. Heap-allocated behind SceneBroadPhase's unique_ptr, so it
-/// never moves: `trees` refers to `prim`'s and `scene`'s topology.
+/// never moves: `trees` refers to `scene`'s topology.
 struct SceneBroadPhase::State {
   State(const Scene& s, const SceneOptions& o)
-      : scene(s), options(o), params{o.min_distance, o.tmax}, prim(scene::scene_topology(scene, params)),
-        trees(scene.triangles, prim.edges, prim.vertices, prim.points) {}
+      : scene(s), options(o), params{o.min_distance, o.tmax}, threads(scene::resolve_threads(o.threads)),
+        trees(scene, params, threads) {}
 
   Scene scene;
   SceneOptions options;
   CcdParams params;
-  scene::ScenePrimitives prim;  // topology; prim.candidates: the current candidates
-  scene::BroadPhaseTrees trees;
-
-  /// Fits the trees to the current positions (builds on the first call) and finds the candidates.
-  void refresh() {
-    const unsigned threads = scene::resolve_threads(options.threads);
-    trees.fit(scene::vertex_boxes(scene.positions_t0, scene.positions_t1, params), threads);
-    prim.candidates = trees.candidates(threads);
-  }
+  unsigned threads;
+  scene::SceneTrees trees;  // validates the scene, builds the trees
+  /// The candidates listed for the current positions, when asked for (candidates()).
+  mutable std::mutex candidates_mutex;
+  mutable std::optional<SceneCandidates> candidates;
 };
 
 SceneBroadPhase::SceneBroadPhase(const Scene& scene, const SceneOptions& options) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   validate(options);
-  state_ = std::make_unique<State>(scene, options);  // validates the scene
-  state_->refresh();
+  state_ = std::make_unique<State>(scene, options);
 }
 
 SceneBroadPhase::~SceneBroadPhase() = default;
@@ -45,20 +43,45 @@ SceneBroadPhase::SceneBroadPhase(SceneBroadPhase&&) noexcept = default;
 SceneBroadPhase& SceneBroadPhase::operator=(SceneBroadPhase&&) noexcept = default;
 
 void SceneBroadPhase::update(const std::vector<Vec3>& positions_t1) {
-  const filter::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   if (positions_t1.size() != state_->scene.positions_t0.size())
     throw std::invalid_argument("exactccd SceneBroadPhase::update: positions_t1 has " +
                                 std::to_string(positions_t1.size()) + " vertices but positions_t0 has " +
                                 std::to_string(state_->scene.positions_t0.size()));
   scene::require_finite_positions(positions_t1, "positions_t1");
   state_->scene.positions_t1 = positions_t1;
-  state_->refresh();
+  state_->candidates.reset();
+  state_->trees.refit(state_->scene, state_->params, state_->threads);
+}
+
+std::vector<Collision> SceneBroadPhase::find_collisions() const {
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  return scene::find_collisions(state_->scene, state_->trees, state_->params, state_->threads);
+}
+
+std::optional<TimeInterval> SceneBroadPhase::earliest_toi() const {
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  return scene::earliest_toi(state_->scene, state_->trees, state_->params, state_->threads);
+}
+
+bool SceneBroadPhase::is_collision_free() const {
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  return !scene::any_collision(state_->scene, state_->trees, state_->params, state_->threads);
+}
+
+double SceneBroadPhase::max_collision_free_step() const {
+  return exactccd::max_collision_free_step(earliest_toi(), state_->params.tmax);
 }
 
 const Scene& SceneBroadPhase::scene() const { return state_->scene; }
 
-const std::vector<std::array<int, 2>>& SceneBroadPhase::edges() const { return state_->prim.edges; }
+const std::vector<std::array<int, 2>>& SceneBroadPhase::edges() const { return state_->trees.topology().edges; }
 
-const SceneCandidates& SceneBroadPhase::candidates() const { return state_->prim.candidates; }
+const SceneCandidates& SceneBroadPhase::candidates() const {
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const std::lock_guard<std::mutex> lock(state_->candidates_mutex);
+  if (!state_->candidates) state_->candidates = state_->trees.trees().candidates(state_->threads);
+  return *state_->candidates;
+}
 
 }  // namespace exactccd

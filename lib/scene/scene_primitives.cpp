@@ -7,6 +7,7 @@
 #include <string>
 
 #include "scene/candidate_finder.hpp"
+#include "scene/parallel.hpp"
 #include "scene/time_bounds.hpp"
 
 namespace exactccd {
@@ -124,31 +125,36 @@ ScenePrimitives topology(const SceneT& s, bool with_points) {
 // the whole step, else the certified enclosure of add_vertex_until; then inflated() (both
 // proofs next to their code). A pair within d at some t in [0, tmax] has overlapping boxes.
 template <class Point>
-std::vector<Box> boxes_of(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params) {
+std::vector<Box> boxes_of(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params,
+                          unsigned threads) {
   std::vector<Box> boxes(x0.size());
-  for (std::size_t v = 0; v < boxes.size(); ++v) {
-    const Vec3 a = lift(x0[v]), b = lift(x1[v]);
-    Box box;
-    if (params.tmax == 1.0) {
-      box.lo = {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
-      box.hi = {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
-    } else {
-      box = empty_box();
-      add_vertex_until(box, a, b, params.tmax);
+  parallel_ranges(boxes.size(), threads, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      const Vec3 a = lift(x0[v]), b = lift(x1[v]);
+      Box box;
+      if (params.tmax == 1.0) {
+        box.lo = {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
+        box.hi = {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+      } else {
+        box = empty_box();
+        add_vertex_until(box, a, b, params.tmax);
+      }
+      boxes[v] = inflated(box, params.min_distance);
     }
-    boxes[v] = inflated(box, params.min_distance);
-  }
+  });
   return boxes;
 }
 
 }  // namespace
 
-std::vector<Box> vertex_boxes(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const CcdParams& params) {
-  return boxes_of(x0, x1, params);
+std::vector<Box> vertex_boxes(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const CcdParams& params,
+                              unsigned threads) {
+  return boxes_of(x0, x1, params, threads);
 }
 
-std::vector<Box> vertex_boxes(const std::vector<Vec2>& x0, const std::vector<Vec2>& x1, const CcdParams& params) {
-  return boxes_of(x0, x1, params);
+std::vector<Box> vertex_boxes(const std::vector<Vec2>& x0, const std::vector<Vec2>& x1, const CcdParams& params,
+                              unsigned threads) {
+  return boxes_of(x0, x1, params, threads);
 }
 
 ScenePrimitives scene_topology(const Scene& s, const CcdParams& params) {
@@ -164,7 +170,7 @@ ScenePrimitives scene_topology(const Scene2d& s, const CcdParams&) {
 ScenePrimitives scene_primitives(const Scene& s, const CcdParams& params, unsigned threads) {
   ScenePrimitives p = scene_topology(s, params);
   BroadPhaseTrees trees(s.triangles, p.edges, p.vertices, p.points);
-  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params), threads);
+  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params, threads), threads);
   p.candidates = trees.candidates(threads);
   return p;
 }
@@ -172,7 +178,7 @@ ScenePrimitives scene_primitives(const Scene& s, const CcdParams& params, unsign
 ScenePrimitives scene_primitives(const Scene2d& s, const CcdParams& params, unsigned threads) {
   ScenePrimitives p = scene_topology(s, params);
   BroadPhaseTrees trees(triangles_of(s), p.edges, p.vertices, p.points);
-  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params), threads);
+  trees.fit(vertex_boxes(s.positions_t0, s.positions_t1, params, threads), threads);
   p.candidates = trees.candidates(threads);
   return p;
 }

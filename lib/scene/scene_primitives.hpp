@@ -53,13 +53,13 @@ ScenePrimitives scene_topology(const Scene2d& scene, const CcdParams& params);
 /// The box of every vertex over the times [0, params.tmax], grown by params.min_distance (the
 /// exact swept box when tmax = 1, else add_vertex_until's certified one; inflated()): two
 /// primitives within that distance at some such time have overlapping hulls of their
-/// vertices' boxes. 2D points lie in the plane z = 0.
+/// vertices' boxes. 2D points lie in the plane z = 0. On up to `threads` threads.
 std::vector<Box> vertex_boxes(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
-                              const CcdParams& params);
+                              const CcdParams& params, unsigned threads = 1);
 
 /// As above for points in the plane.
 std::vector<Box> vertex_boxes(const std::vector<Vec2>& positions_t0, const std::vector<Vec2>& positions_t1,
-                              const CcdParams& params);
+                              const CcdParams& params, unsigned threads = 1);
 
 /// Throws std::invalid_argument unless params.min_distance is finite and >= 0 and params.tmax
 /// is in (0, 1].

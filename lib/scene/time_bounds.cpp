@@ -16,11 +16,6 @@ using Interval = CGAL::Interval_nt<false>;  // only under Protect_FPU_rounding
 
 }  // namespace
 
-Box empty_box() {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  return Box{{{inf, inf, inf}}, {{-inf, -inf, -inf}}};
-}
-
 // Per coordinate, with a = x(0), b = x(1): x(h) = a + h (b - a) lies between a and b. The
 // computed m = fl(a + fl(h fl(b - a))) is within 4u M + O(u^2) M + 2^-1074 of it (u = 2^-53,
 // M = |a| + |b|: three roundings of terms bounded by 2M, one possible underflow). The pad

@@ -4,13 +4,28 @@
 #pragma once
 
 #include <array>
+#include <limits>
 
 #include "scene/broad_phase.hpp"
 
 namespace exactccd::scene {
 
 /// An empty box (lo = +inf, hi = -inf), the start of a union.
-Box empty_box();
+inline Box empty_box() {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return Box{{{inf, inf, inf}}, {{-inf, -inf, -inf}}};
+}
+
+/// Grows `box` to hold both positions of a vertex moving from p0 (t = 0) to p1 (t = 1): its
+/// exact swept box over [0, 1] (min and max of input coordinates: no rounding).
+inline void add_vertex(Box& box, const Vec3& p0, const Vec3& p1) {
+  const double a[3] = {p0.x, p0.y, p0.z}, b[3] = {p1.x, p1.y, p1.z};
+  for (int k = 0; k < 3; ++k) {
+    const double lo = a[k] < b[k] ? a[k] : b[k], hi = a[k] < b[k] ? b[k] : a[k];
+    box.lo[k] = lo < box.lo[k] ? lo : box.lo[k];
+    box.hi[k] = hi > box.hi[k] ? hi : box.hi[k];
+  }
+}
 
 /// Grows `box` to hold the positions over the times [0, h] (h in [0, 1]) of a vertex moving
 /// linearly from p0 (t = 0) to p1 (t = 1). Certified despite rounding (see the .cpp).

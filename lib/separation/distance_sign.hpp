@@ -1,54 +1,21 @@
-// The certified sign of a feature pair's distance polynomial f (separation_terms.hpp) at a
-// double time t, in double-double arithmetic (filter/double_word.hpp), without GMP.
-//
-// Used by the interval stage's narrowing of a minimum-separation TOI (interval_separation.hpp):
-// at the doubles next to a root of f, intervals in doubles cannot give f's sign (its value is
-// about 2^-53 of the size of its terms); double-double with a running error bound almost
-// always can (tests/test_distance_sign.cpp counts it), without GMP.
-//
-// f is evaluated from the geometry at t (feature_condition on values, as distance_at), never
-// from its power-basis coefficients: the vector from point i to point j at t is
-// (v0 - u0) + t ((v1 - u1) - (v0 - u0)), the two differences at t0 and t1 exact (TwoSum), so
-// the error bound is relative to the primitives' local size, not to the coordinates' or the
-// coefficients'.
-//
-// Scaling: f is homogeneous in lengths (degree 2 for point-point, 4 for point-edge, 6 for
-// point-triangle and edge-edge, d counted as a length), so multiplying every coordinate and d
-// by 2^s multiplies f by 2^(k s), k in {2, 4, 6}: a positive factor, the sign is unchanged.
-// Before evaluating, every input is scaled by the power of two 2^s that brings the largest
-// coordinate magnitude M into [1, 2). A product by a power of two is exact when its result is
-// representable without rounding: scaling up (s > 0) never overflows (the coordinates become
-// below 2) and never creates bits below 2^-1074, so it is exact (done in two factors when 2^s
-// is not a double); scaling down (s < 0) is exact unless the result is subnormal, and such a
-// coordinate is scaled back and compared: an inexact one gives "not certified". d is scaled
-// likewise: when d 2^s >= 2^-500 it is normal, so exact; when d 2^s > 2^400 the call gives
-// "not certified"; when d 2^s < 2^-500 (d negligible against the coordinates) its square is
-// not formed: d^2 2^(2s) is in [0, 2^-1000], represented by the value 0 with the error bound
-// 2^-1000 (a valid Approx whatever the rounding of d 2^s: rounding is monotone). So:
-//   Overflow: every scaled coordinate is below 2 in magnitude; every difference at t0 or t1
-//   below 4, the difference of those below 8, the value at t in [0, 1] below 12 < 2^4 (error
-//   bounds far smaller). The largest expressions are degree 6: edge-edge w = da x db has
-//   components below 2 * 2^8 = 2^9, h = w.r below 3 * 2^13 < 2^15, h^2 below 2^30;
-//   s = (r x db).w and u below 3 * 2^9 * 2^9 < 2^20, |w|^2 below 2^20; d^2 <= 2^800, so
-//   d^2 |w|^2 below 2^820; point-triangle likewise (n = e1 x e2 below 2^9, n.(p - a) below
-//   2^15), point-edge and point-point smaller. Error bounds are of the same order (each a sum
-//   of products of magnitudes and bounds of the operands, plus kRelative and kAbsolute
-//   terms). So nothing comes near 2^1000, and the coordinates are far below TwoSum's 2^1022.
-//   Underflow: kAbsolute (2^-1000 per operation, double_word.hpp) bounds the loss; a value
-//   too small to be certified against it (a feature of size below about 2^-150 of the largest
-//   coordinate, near a root) gives "not certified" and the caller decides exactly.
-// t must be a double in [0, 1] (not scaled: it is not a length).
+// The sign of a feature pair's distance polynomial f (separation_terms.hpp) at a double time t:
+// certified in double-double arithmetic (numeric/certified_sign.hpp, the proof there), exact in
+// integers where that is not decisive, and a long-double guess of f's root. Used by the
+// separation walk's narrowing of a TOI (separation_walk.cpp): at the doubles next to a root of
+// f, intervals in doubles cannot give f's sign; double-double almost always can
+// (tests/test_distance_sign.cpp counts it), without GMP.
 #pragma once
+
+#include <gmpxx.h>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
-#include "contact/vec3_ops.hpp"
 #include "exactccd/types.hpp"
-#include "filter/double_word.hpp"
-#include "filter/power_of_two.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "numeric/certified_sign.hpp"
 #include "separation/separation_terms.hpp"
 
 namespace exactccd::separation {
@@ -58,44 +25,108 @@ namespace exactccd::separation {
 /// the minimum distance d; certified whenever nonzero (never for f(t) = 0, an exact zero is
 /// left to the caller's exact evaluation). Needs round-to-nearest (double_word.hpp).
 /// `approximation`, when given, receives an approximation of f(t) times a positive factor
-/// that depends only on x and d (the scaling in the header), for root estimates.
+/// that depends only on x and d (the scaling of numeric/certified_sign.hpp), for root estimates.
 template <std::size_t N>
 int certified_distance_sign(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double t,
                             double* approximation = nullptr) {
-  using namespace filter::double_word;
-  constexpr std::size_t P = N / 2;
-  if (!(t >= 0 && t <= 1)) return 0;
-  // The largest coordinate magnitude M and the scale 2^s with M 2^s in [1, 2).
-  double largest = 0;
-  for (const Vec3& p : x) largest = std::fmax(largest, std::fmax(std::fabs(p.x), std::fmax(std::fabs(p.y), std::fabs(p.z))));
-  if (!(largest > 0 && largest < 0x1p1023) || !(d >= 0 && d < 0x1p1023)) return 0;  // all zero, or not finite
-  // 2^s as two normal double factors (filter::unit_scale), each applied exactly when scaling
-  // up: the first product is below 2 (so normal or exact), the second likewise.
-  const filter::UnitScale unit = filter::unit_scale(largest);
-  const int s = unit.s;  // in (-1023, 1074]
-  bool exact = true;
-  const auto scale = [&](double v) {
-    const double r = unit.apply(v);
-    // Scaling down (s < 0): a subnormal result may have lost bits; check by scaling back.
-    if (s < 0 && std::fabs(r) < 0x1p-1022 && std::ldexp(r, -s) != v) exact = false;
-    return r;
-  };
-  std::array<Vec3, N> y;
-  for (std::size_t i = 0; i < N; ++i) y[i] = {scale(x[i].x), scale(x[i].y), scale(x[i].z)};
-  if (!exact) return 0;
-  const double sd = unit.apply(d);  // d 2^s, exact when >= 2^-500 (above)
-  if (sd > 0x1p400) return 0;
-  const Approx dd = sd >= 0x1p-500 ? Approx{{sd, 0.0}, 0.0} * Approx{{sd, 0.0}, 0.0} : Approx{{0.0, 0.0}, 0x1p-1000};
-  const auto rel = [&](int i, int j) {
-    const Vec3 &u0 = y[static_cast<std::size_t>(i)], &u1 = y[static_cast<std::size_t>(i) + P];
-    const Vec3 &v0 = y[static_cast<std::size_t>(j)], &v1 = y[static_cast<std::size_t>(j) + P];
-    return Vec3T<Approx>{difference_at(u0.x, v0.x, u1.x, v1.x, t), difference_at(u0.y, v0.y, u1.y, v1.y, t),
-                         difference_at(u0.z, v0.z, u1.z, v1.z, t)};
-  };
+  using Approx = numeric::double_word::Approx;
+  const numeric::GeometryAt<N> at(x, t, d);
+  if (!at.usable()) return 0;
   Approx value{{0.0, 0.0}, 0.0};
-  feature_condition(f, rel, dd, [&](const Approx& distance, const auto&...) { value = distance; });
+  feature_condition(f, [&](int i, int j) { return at.vector(i, j); }, at.d_squared(),
+                    [&](const Approx& distance, const auto&...) { value = distance; });
   if (approximation) *approximation = value.value.hi;
-  return certain_sign(value);
+  return numeric::double_word::certain_sign(value);
+}
+
+/// The exact sign of feature f's distance polynomial at the double m in (0, 1), in integers:
+/// every double is an integer times 2^e; scaling every length (the coordinates and d) by one
+/// power of two 2^S multiplies f, homogeneous of degree 2, 4 or 6 in lengths, by a positive
+/// factor, so its sign is unchanged. With E the least ulp exponent of the coordinates and d,
+/// and m = M 2^-K, the positions at m scaled by 2^(K - E) are the integers X0 2^K + M (X1 - X0).
+/// Constant polynomials carry the values (their operators evaluate at once; mpz_class's
+/// expression templates would dangle in feature_condition's `auto` temporaries).
+template <std::size_t N>
+int exact_distance_sign(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double m) {
+  constexpr std::size_t P = N / 2;
+  using Z = contact::Poly<mpz_class, 0>;
+  const auto ulp_exponent = [](double v) {
+    int e = 0;
+    std::frexp(v, &e);
+    return v == 0 ? std::numeric_limits<int>::max() : e - 53;
+  };
+  int E = ulp_exponent(d);
+  for (std::size_t i = 0; i < N; ++i)
+    for (const double c : {x[i].x, x[i].y, x[i].z}) E = std::min(E, ulp_exponent(c));
+  if (E == std::numeric_limits<int>::max()) E = 0;  // everything is zero
+  const auto scaled = [&](double v) {  // v 2^-E, an integer
+    if (v == 0) return mpz_class(0);
+    int e = 0;
+    const double fraction = std::frexp(v, &e);
+    mpz_class z(std::ldexp(fraction, 53));  // |fraction| 2^53 < 2^53: exact
+    return mpz_class(z << static_cast<mp_bitcnt_t>(e - 53 - E));
+  };
+  int em = 0;
+  const double fm = std::frexp(m, &em);  // m = M 2^-K, K = 53 - em >= 0 for m in (0, 1)
+  const mpz_class M(std::ldexp(fm, 53));
+  const mp_bitcnt_t K = static_cast<mp_bitcnt_t>(53 - em);
+  std::array<Vec3T<Z>, P> exact;
+  const auto move_exactly = [&](double x0, double x1) {
+    const mpz_class X0 = scaled(x0);
+    return Z{{mpz_class((X0 << K) + M * (scaled(x1) - X0))}};
+  };
+  for (std::size_t p = 0; p < P; ++p)
+    exact[p] = {move_exactly(x[p].x, x[p + P].x), move_exactly(x[p].y, x[p + P].y), move_exactly(x[p].z, x[p + P].z)};
+  const mpz_class D = scaled(d) << K;
+  return sgn(distance_at(f, exact, Z{{mpz_class(D * D)}}).c[0]);
+}
+
+/// The exact sign of feature f's distance polynomial at the double m in [0, 1], from the
+/// positions at m: certified in double-double arithmetic when that is decisive, else exactly in
+/// integers (then `used_integers` is set; a root at a double gives 0). Needs round-to-nearest.
+/// `approximation`: as in certified_distance_sign, when the double-double sign decides.
+template <std::size_t N>
+int distance_sign_at(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double m,
+                     double* approximation, bool& used_integers) {
+  if (const int s = certified_distance_sign(f, x, d, m, approximation); s != 0) return s;
+  used_integers = true;
+  return exact_distance_sign(f, x, d, m);
+}
+
+/// A guess of the root of feature f's distance in (a, b) (f(a) > 0 > f(b)): the Illinois
+/// variant of regula falsi on the distance evaluated from the geometry in long double. Only a
+/// guess: the caller certifies signs at whatever it returns.
+template <std::size_t N>
+double root_guess(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double a, double b) {
+  constexpr std::size_t P = N / 2;
+  using L = long double;
+  const auto value = [&](L t) {
+    std::array<Vec3T<L>, P> at;
+    const auto move = [&](double x0, double x1) { return L(x0) + t * (L(x1) - L(x0)); };
+    for (std::size_t p = 0; p < P; ++p) at[p] = {move(x[p].x, x[p + P].x), move(x[p].y, x[p + P].y), move(x[p].z, x[p + P].z)};
+    return distance_at(f, at, L(d) * L(d));
+  };
+  L lo = a, hi = b, f_lo = value(lo), f_hi = value(hi);
+  if (!(f_lo > 0 && f_hi < 0)) return a + (b - a) / 2;
+  int side = 0;
+  for (int i = 0; i < 60 && hi - lo > 0; ++i) {
+    const L m = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(m > lo && m < hi)) break;
+    const L fm = value(m);
+    if (fm == 0) return static_cast<double>(m);
+    if (fm > 0) {
+      lo = m;
+      f_lo = fm;
+      if (side == 1) f_hi /= 2;  // Illinois: halve the stale end
+      side = 1;
+    } else {
+      hi = m;
+      f_hi = fm;
+      if (side == -1) f_lo /= 2;
+      side = -1;
+    }
+  }
+  return static_cast<double>((lo + hi) / 2);
 }
 
 }  // namespace exactccd::separation

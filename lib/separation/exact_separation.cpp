@@ -25,16 +25,17 @@ struct IntegerTerm {
   std::vector<IntegerPoly> positive;
 };
 
+/// The terms of the query's feature pairs with use[f], as integer polynomials; `bits` receives
+/// the most bits of a coefficient (which bounds CGAL's recursion depth).
 template <class Query>
-std::optional<TimeInterval> earliest(const Query& q, const RationalCcdParams& params, const FeatureMask* use = nullptr) {
+std::vector<IntegerTerm> integer_terms(const Query& q, const RationalCcdParams& params, const kinds::FeatureMask& use,
+                                       std::size_t& bits) {
   using Kind = kinds::kind_of<Query>;
+  static_assert(Kind::features.size() <= std::tuple_size_v<kinds::FeatureMask>);
   const mpq_class d2 = params.min_distance * params.min_distance;
   std::vector<IntegerTerm> terms;
-  std::size_t bits = 0;
-  static_assert(Kind::features.size() <= std::tuple_size_v<FeatureMask>);
-  std::array<bool, Kind::features.size()> used;
-  for (std::size_t f = 0; f < used.size(); ++f) used[f] = !use || (*use)[f];
-  for (const Term<mpq_class>& t : separation::terms<Kind>(points3<mpq_class>(q), d2, used.data())) {
+  bits = 0;
+  for (const Term<mpq_class>& t : separation::terms<Kind>(points3<mpq_class>(q), d2, use.data())) {
     IntegerTerm it{integer_poly(t.distance), {}};
     bits = std::max(bits, coefficient_bits(it.distance));
     for (int i = 0; i < t.positives; ++i) {
@@ -43,53 +44,51 @@ std::optional<TimeInterval> earliest(const Query& q, const RationalCcdParams& pa
     }
     terms.push_back(std::move(it));
   }
-  std::optional<TimeInterval> result;
-  exact::run_with_stack_for_depth(exact::descartes_depth_bound(bits), [&] {
-    const Kernel kernel;
-    std::vector<Root> times{rational_root(0)};
-    for (const IntegerTerm& t : terms)
-      if (!CGAL::is_zero(t.distance)) append_roots(kernel, t.distance, 0, params.tmax, times);
-    sort_unique(kernel, times);
-    const auto sign_at = kernel.sign_at_1_object();
-    const auto sign = [&](const IntegerPoly& p, const Root& t) {
-      return CGAL::is_zero(p) ? 0 : static_cast<int>(sign_at(p, t));
-    };
-    for (const Root& t : times) {
-      const bool holds = std::any_of(terms.begin(), terms.end(), [&](const IntegerTerm& term) {
-        return std::all_of(term.positive.begin(), term.positive.end(),
-                           [&](const IntegerPoly& g) { return sign(g, t) > 0; }) &&
-               sign(term.distance, t) <= 0;
-      });
-      if (holds) {
-        result = enclose(kernel, t);
-        return;
-      }
-    }
+  return terms;
+}
+
+/// Some term holds at the algebraic time t (every sign exact).
+bool some_term_holds(const Kernel& kernel, const std::vector<IntegerTerm>& terms, const Root& t) {
+  const auto sign_at = kernel.sign_at_1_object();
+  const auto sign = [&](const IntegerPoly& p) { return CGAL::is_zero(p) ? 0 : static_cast<int>(sign_at(p, t)); };
+  return std::any_of(terms.begin(), terms.end(), [&](const IntegerTerm& term) {
+    return std::all_of(term.positive.begin(), term.positive.end(), [&](const IntegerPoly& g) { return sign(g) > 0; }) &&
+           sign(term.distance) <= 0;
   });
-  return result;
+}
+
+/// The first candidate time (0 and the roots in [0, tmax] of every nonzero f, increasing) at
+/// which a term holds, in its tightest double interval.
+std::optional<TimeInterval> earliest(const std::vector<IntegerTerm>& terms, const mpq_class& tmax) {
+  const Kernel kernel;
+  std::vector<Root> times{rational_root(0)};
+  for (const IntegerTerm& t : terms)
+    if (!CGAL::is_zero(t.distance)) append_roots(kernel, t.distance, 0, tmax, times);
+  sort_unique(kernel, times);
+  for (const Root& t : times)
+    if (some_term_holds(kernel, terms, t)) return enclose(kernel, t);
+  return std::nullopt;
 }
 
 }  // namespace
 
-std::optional<TimeInterval> exact_toi(const RationalVertexFaceQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
-std::optional<TimeInterval> exact_toi(const RationalEdgeEdgeQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
-std::optional<TimeInterval> exact_toi(const RationalPointEdgeQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
-std::optional<TimeInterval> exact_toi(const RationalPointPointQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
-std::optional<TimeInterval> exact_toi(const RationalEdgeEdge2dQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
-std::optional<TimeInterval> exact_toi(const RationalPointEdge2dQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
-std::optional<TimeInterval> exact_toi(const RationalPointPoint2dQuery& q, const RationalCcdParams& p) { return earliest(q, p); }
+template <class RationalQuery>
+std::optional<TimeInterval> exact_toi(const RationalQuery& q, const RationalCcdParams& params,
+                                      const kinds::FeatureMask& use) {
+  std::size_t bits = 0;
+  const std::vector<IntegerTerm> terms = integer_terms(q, params, use, bits);
+  std::optional<TimeInterval> result;
+  exact::run_with_stack_for_depth(exact::descartes_depth_bound(bits), [&] { result = earliest(terms, params.tmax); });
+  return result;
+}
 
-#define EXACTCCD_EXACT_TOI_MASKED(Query)                                                                   \
-  std::optional<TimeInterval> exact_toi(const Query& q, const RationalCcdParams& p, const FeatureMask& use) { \
-    return earliest(q, p, &use);                                                                             \
-  }
-EXACTCCD_EXACT_TOI_MASKED(RationalVertexFaceQuery)
-EXACTCCD_EXACT_TOI_MASKED(RationalEdgeEdgeQuery)
-EXACTCCD_EXACT_TOI_MASKED(RationalPointEdgeQuery)
-EXACTCCD_EXACT_TOI_MASKED(RationalPointPointQuery)
-EXACTCCD_EXACT_TOI_MASKED(RationalEdgeEdge2dQuery)
-EXACTCCD_EXACT_TOI_MASKED(RationalPointEdge2dQuery)
-EXACTCCD_EXACT_TOI_MASKED(RationalPointPoint2dQuery)
-#undef EXACTCCD_EXACT_TOI_MASKED
+// The exact path for every kind of the minimum-separation question (kinds::for_each_kind).
+template std::optional<TimeInterval> exact_toi(const RationalVertexFaceQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
+template std::optional<TimeInterval> exact_toi(const RationalEdgeEdgeQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
+template std::optional<TimeInterval> exact_toi(const RationalPointEdgeQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
+template std::optional<TimeInterval> exact_toi(const RationalPointPointQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
+template std::optional<TimeInterval> exact_toi(const RationalEdgeEdge2dQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
+template std::optional<TimeInterval> exact_toi(const RationalPointEdge2dQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
+template std::optional<TimeInterval> exact_toi(const RationalPointPoint2dQuery&, const RationalCcdParams&, const kinds::FeatureMask&);
 
 }  // namespace exactccd::separation

@@ -61,8 +61,9 @@
 
 #include "contact/vec3_ops.hpp"
 #include "exactccd/types.hpp"
-#include "filter/power_of_two.hpp"
+#include "numeric/power_of_two.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/outcome.hpp"
 #include "separation/separation_terms.hpp"
 
 namespace exactccd::separation {
@@ -91,7 +92,7 @@ struct ProjectionFrame {
       for (std::size_t i = 0; i < N; ++i) y[i] = {x[i].x - x[0].x, x[i].y - x[0].y, x[i].z - x[0].z};
       d = min_distance;
     } else {
-      const filter::UnitScale unit = filter::unit_scale(largest);
+      const numeric::UnitScale unit = numeric::unit_scale(largest);
       const auto scale = [&](double v) { return unit.apply(v); };
       const Vec3 o{scale(x[0].x), scale(x[0].y), scale(x[0].z)};
       for (std::size_t i = 0; i < N; ++i) y[i] = {scale(x[i].x) - o.x, scale(x[i].y) - o.y, scale(x[i].z) - o.z};
@@ -125,6 +126,79 @@ struct ProjectionFrame {
   }
 };
 
+/// The rows (at t0 and at t1) of the points of each set of a separation test.
+template <std::size_t N>
+struct SideRows {
+  std::array<std::size_t, N> first{}, second{};
+  std::size_t firsts = 0, seconds = 0;
+
+  /// The rows of `side`'s points (P of them, the query's rows all at t0 then all at t1).
+  template <std::size_t P>
+  explicit SideRows(const std::array<Side, P>& side) {
+    for (std::size_t i = 0; i < 2 * P; ++i) {
+      if (side[i % P] == Side::first) first[firsts++] = i;
+      if (side[i % P] == Side::second) second[seconds++] = i;
+    }
+  }
+};
+
+/// The gap along the normalised direction n certifies the separation (header, step 4): the
+/// projections of one set's rows stay farther than the threshold from the other's.
+template <std::size_t N>
+bool gap_certified(const ProjectionFrame<N>& frame, const SideRows<N>& rows, const Vec3& n) {
+  const auto project = [&](std::size_t i) { return (n.x * frame.y[i].x + n.y * frame.y[i].y) + n.z * frame.y[i].z; };
+  const auto extent = [&](const std::array<std::size_t, N>& of, std::size_t count, double& lo, double& hi) {
+    lo = hi = project(of[0]);
+    for (std::size_t k = 1; k < count; ++k) {
+      const double p = project(of[k]);
+      lo = std::min(lo, p);
+      hi = std::max(hi, p);
+    }
+  };
+  double a_lo, a_hi, b_lo, b_hi;
+  extent(rows.first, rows.firsts, a_lo, a_hi);
+  extent(rows.second, rows.seconds, b_lo, b_hi);
+  const double r = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+  const double threshold = ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
+  return b_lo - a_hi > threshold || a_lo - b_hi > threshold;
+}
+
+/// The gap along n normalised by its largest component magnitude (header, step 2) certifies
+/// the separation; false for a direction that is zero or not finite.
+template <std::size_t N>
+bool direction_certified(const ProjectionFrame<N>& frame, const SideRows<N>& rows, const Vec3& n) {
+  if (!(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) return false;
+  const double m = std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
+  if (!(m > 0)) return false;  // zero
+  return gap_certified(frame, rows, Vec3{n.x / m, n.y / m, n.z / m});
+}
+
+/// Feature pair f's natural direction at the rows `at` + its points (header: point-point
+/// y - x; point-edge e x (r x e); point-triangle the normal; edge-edge da x db), or a zero
+/// vector when it has none.
+template <std::size_t N>
+Vec3 natural_direction(const std::array<Vec3, N>& y, const kinds::Feature& f, int at) {
+  using contact::cross;
+  using contact::operator-;
+  const auto p = [&](int j) { return y[static_cast<std::size_t>(f.points[j] + at)]; };
+  switch (f.pair) {
+    case kinds::FeaturePair::point_point:
+      return p(1) - p(0);
+    case kinds::FeaturePair::point_edge: {
+      // r x e normalised before the second product keeps n of the size of e (not e^2 r).
+      const Vec3 e = p(2) - p(1), r = p(0) - p(1), c = cross(r, e);
+      const double m = std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z)));
+      if (!(m > 0 && std::isfinite(m))) return Vec3{0, 0, 0};
+      return cross(e, Vec3{c.x / m, c.y / m, c.z / m});
+    }
+    case kinds::FeaturePair::point_triangle:
+      return cross(p(2) - p(1), p(3) - p(1));
+    case kinds::FeaturePair::edge_edge:
+      return cross(p(1) - p(0), p(3) - p(2));
+  }
+  return Vec3{0, 0, 0};
+}
+
 /// True when a direction certifies that the points of `side` first, moving linearly over
 /// [0, 1], stay farther than d from the hull of the second ones (so from every convex
 /// combination of them) at every t; directions: those of `features` at t0 and t1, then the axes
@@ -135,67 +209,16 @@ bool points_separated(const ProjectionFrame<N>& frame, const std::array<Side, Ki
                       bool both_ends = true) {
   constexpr int P = Kind::points;
   if (!frame.usable) return false;
-  const std::array<Vec3, N>& y = frame.y;
-  // The rows of each set (at t0 and at t1); each set has at least one point.
-  std::array<std::size_t, N> first_rows{}, second_rows{};
-  std::size_t firsts = 0, seconds = 0;
-  for (int i = 0; i < 2 * P; ++i) {
-    if (side[i % P] == Side::first) first_rows[firsts++] = static_cast<std::size_t>(i);
-    if (side[i % P] == Side::second) second_rows[seconds++] = static_cast<std::size_t>(i);
-  }
-  if (firsts == 0 || seconds == 0) return false;
-  // Certifies the gap along the normalised direction n (header, step 4).
-  const auto certifies = [&](const Vec3& n) {
-    const auto project = [&](std::size_t i) { return (n.x * y[i].x + n.y * y[i].y) + n.z * y[i].z; };
-    double a_lo = project(first_rows[0]), a_hi = a_lo;
-    for (std::size_t k = 1; k < firsts; ++k) {
-      const double p = project(first_rows[k]);
-      a_lo = std::min(a_lo, p);
-      a_hi = std::max(a_hi, p);
-    }
-    double b_lo = project(second_rows[0]), b_hi = b_lo;
-    for (std::size_t k = 1; k < seconds; ++k) {
-      const double p = project(second_rows[k]);
-      b_lo = std::min(b_lo, p);
-      b_hi = std::max(b_hi, p);
-    }
-    const double r = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
-    const double threshold = ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
-    return b_lo - a_hi > threshold || a_lo - b_hi > threshold;
-  };
-  // A direction normalised by its largest component magnitude (header, step 2).
-  const auto along = [&](const Vec3& n) {
-    if (!(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))) return false;
-    const double m = std::max(std::fabs(n.x), std::max(std::fabs(n.y), std::fabs(n.z)));
-    if (!(m > 0)) return false;  // zero
-    return certifies(Vec3{n.x / m, n.y / m, n.z / m});
-  };
-  for (int at = 0; at < (both_ends ? 2 * P : P); at += P) {
+  const SideRows<N> rows(side);  // each set needs at least one point
+  if (rows.firsts == 0 || rows.seconds == 0) return false;
+  for (int at = 0; at < (both_ends ? 2 * P : P); at += P)
     for (std::size_t k = 0; k < feature_count; ++k) {
-      const kinds::Feature& f = features[k];
-      if (Kind::dimension == 2 && f.pair == kinds::FeaturePair::edge_edge) continue;  // n = z axis
-      using contact::cross;
-      using contact::operator-;
-      const auto p = [&](int j) { return y[static_cast<std::size_t>(f.points[j] + at)]; };
-      Vec3 n{};
-      switch (f.pair) {
-        case kinds::FeaturePair::point_point: n = p(1) - p(0); break;
-        case kinds::FeaturePair::point_edge: {
-          // r x e normalised before the second product keeps n of the size of e (not e^2 r).
-          const Vec3 e = p(2) - p(1), r = p(0) - p(1), c = cross(r, e);
-          const double m = std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z)));
-          if (!(m > 0 && std::isfinite(m))) continue;
-          n = cross(e, Vec3{c.x / m, c.y / m, c.z / m});
-          break;
-        }
-        case kinds::FeaturePair::point_triangle: n = cross(p(2) - p(1), p(3) - p(1)); break;
-        case kinds::FeaturePair::edge_edge: n = cross(p(1) - p(0), p(3) - p(2)); break;
-      }
-      if (along(n)) return true;
+      if (Kind::dimension == 2 && features[k].pair == kinds::FeaturePair::edge_edge) continue;  // n = z axis
+      if (direction_certified(frame, rows, natural_direction(frame.y, features[k], at))) return true;
     }
-  }
   for (int axis = 0; axis < Kind::dimension; ++axis)
-    if (certifies(Vec3{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0})) return true;
+    if (gap_certified(frame, rows, Vec3{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0}))
+      return true;
   return false;
 }
 
@@ -234,5 +257,17 @@ bool feature_separated(const ProjectionFrame<N>& frame, const kinds::Feature& f)
   for (int k = 0; k < count; ++k) side[f.points[k]] = k < first ? Side::first : Side::second;
   return points_separated<Kind>(frame, side, std::array<kinds::Feature, 1>{f}, 1);
 }
+
+/// The first stage of the minimum-separation question (and, at d = 0, of the point and 2D
+/// kinds): a direction certifies that the swept primitives stay farther than d apart.
+struct SeparatingDirectionStage {
+  static constexpr pipeline::Counter counter = &StageCounters::separating_direction;  ///< counted as
+  /// Separate when a direction certifies it; else undecided.
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    if (separated_beyond(work.query(), work.question.params.min_distance)) return pipeline::Outcome::separate();
+    return pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::separation

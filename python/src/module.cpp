@@ -583,7 +583,7 @@ PYBIND11_MODULE(_exactccd, m) {
     }
   });
 
-  kinds::for_each_separation_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
+  kinds::for_each_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
   define_rigid(m);
 
   m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);

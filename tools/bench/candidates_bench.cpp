@@ -7,10 +7,11 @@
 //   build/candidates_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <map>
 
 #include "exactccd/exactccd.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 
 namespace {
@@ -94,6 +95,73 @@ void BM_PrimitiveToiLoop(benchmark::State& state) {
   }
   label(state, f);
 }
+
+/// Candidates whose boxes do not overlap (issue 23, item 5): every edge of the cloth paired with
+/// an edge half the list away, kept when their swept boxes over [0, 1] are disjoint (most are),
+/// rows of vertex indices; built once.
+struct DisjointFixture {
+  Scene scene;
+  CandidateSet candidates;
+};
+
+const DisjointFixture& disjoint_fixture(int resolution) {
+  static std::map<int, DisjointFixture> cache;  // benchmark-local, filled on the main thread
+  auto it = cache.find(resolution);
+  if (it != cache.end()) return it->second;
+  DisjointFixture f;
+  const scene::MovingMesh mesh = scene::procedural_scene("cloth", resolution, 1);
+  f.scene = Scene{mesh.positions_t0, mesh.positions_t1, mesh.triangles, {}, {}};
+  const auto edges = scene::unique_edges(f.scene.triangles);
+  const auto boxes = scene::vertex_boxes(f.scene.positions_t0, f.scene.positions_t1, {});
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto& a = edges[i];
+    const auto& b = edges[(i + edges.size() / 2) % edges.size()];
+    const auto box_a = scene::hull(boxes[a[0]], boxes[a[1]]), box_b = scene::hull(boxes[b[0]], boxes[b[1]]);
+    if (!scene::overlap(box_a, box_b)) f.candidates.edge_edge.push_back({a[0], a[1], b[0], b[1]});
+  }
+  return cache.emplace(resolution, std::move(f)).first->second;
+}
+
+/// find_collisions over candidates whose boxes do not overlap (validation, box test, nothing
+/// else), one thread: the cost per such candidate (counter ns_per_candidate).
+void BM_DisjointCandidatesFindCollisions(benchmark::State& state) {
+  const DisjointFixture& f = disjoint_fixture(static_cast<int>(state.range(0)));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        find_collisions(f.scene.positions_t0, f.scene.positions_t1, f.candidates, SceneOptions{1}));
+  state.counters["candidates"] = static_cast<double>(f.candidates.size());
+  state.counters["ns_per_candidate"] = benchmark::Counter(
+      static_cast<double>(f.candidates.size()) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+/// The box test alone over the same rows, written as a simulator's broad phase would: the
+/// swept box of each edge from its two vertices' positions at t0 and t1, then the overlap test.
+void BM_DisjointCandidatesBoxTest(benchmark::State& state) {
+  const DisjointFixture& f = disjoint_fixture(static_cast<int>(state.range(0)));
+  const auto& x0 = f.scene.positions_t0;
+  const auto& x1 = f.scene.positions_t1;
+  const auto box = [&](int a, int b) {
+    scene::Box r;
+    const Vec3* p[4] = {&x0[a], &x1[a], &x0[b], &x1[b]};
+    r.lo = r.hi = {p[0]->x, p[0]->y, p[0]->z};
+    for (const Vec3* q : p) {
+      const double c[3] = {q->x, q->y, q->z};
+      for (int k = 0; k < 3; ++k) r.lo[k] = std::min(r.lo[k], c[k]), r.hi[k] = std::max(r.hi[k], c[k]);
+    }
+    return r;
+  };
+  for (auto _ : state) {
+    std::size_t overlapping = 0;
+    for (const auto& row : f.candidates.edge_edge) overlapping += scene::overlap(box(row[0], row[1]), box(row[2], row[3]));
+    benchmark::DoNotOptimize(overlapping);
+  }
+  state.counters["candidates"] = static_cast<double>(f.candidates.size());
+  state.counters["ns_per_candidate"] = benchmark::Counter(
+      static_cast<double>(f.candidates.size()) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK(BM_DisjointCandidatesFindCollisions)->Arg(64)->Arg(220)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DisjointCandidatesBoxTest)->Arg(64)->Arg(220)->Unit(benchmark::kMillisecond);
 
 #define EXACTCCD_SIZES ->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_SceneMaxStep) EXACTCCD_SIZES;

@@ -1,4 +1,4 @@
-// Scene-level CCD per time step of the cloth-on-sphere scene (lib/scene/procedural_scenes.hpp)
+// Scene-level CCD per time step of the cloth-on-sphere scene (tools/lib/scenes/procedural_scenes.hpp)
 // at resolutions 16, 32 and 64 (Google Benchmark): the broad phase, the narrow phase over the
 // same candidates with the filtered (exact) and the naive (textbook doubles, not robust)
 // methods, and the whole scene functions on one thread (find_collisions also on two, by wall
@@ -16,7 +16,21 @@
 //
 // (one find_collisions step on 2 threads in a fresh process; prints JSON with getrusage's
 // ru_maxrss, the process's peak resident set, after building the scene and after the step).
+// The streamed step (issue 23): BM_StepBroadStream (the broad phase as the scene functions now
+// run it, pairs streamed and counted), BM_StepEarliest, and a line search on SceneBroadPhase
+// (BM_LineSearchFirst: built on the full step and asked max_collision_free_step; Next: the
+// same object updated to the steps 1/2, 1/4, 1/8, 1/16 in turn; Fresh: the free function on
+// those steps). With --frames=T0,T1 (two mesh files of one step, e.g. the Scalable CCD
+// dataset's cloth-ball frames) also BM_Frames*: the whole find_collisions and earliest_toi, the
+// streamed broad phase, and the narrow phase over its listed candidates (filtered, naive), on 1
+// and 2 threads.
 #include <benchmark/benchmark.h>
+#ifdef EXACTCCD_BENCH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
 
 #include <sys/resource.h>
 
@@ -26,10 +40,14 @@
 #include <string>
 
 #include "exactccd/exactccd.hpp"
+#include "numeric/fp_environment.hpp"
+#include "io/mesh_file.hpp"
 #include "scene/parallel.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scene/pair_stream.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
-#include "tools/methods.hpp"
+#include "scene/streamed_step.hpp"
+#include "methods/methods.hpp"
 
 namespace {
 
@@ -240,6 +258,86 @@ void BM_StepWhole(benchmark::State& state) {
   state.counters["collisions"] = static_cast<double>(found);
 }
 
+/// The streamed broad phase alone as the scene functions run it (topology, vertex boxes, trees
+/// built, then every pair streamed to a narrow phase that only counts it), on state.range(1)
+/// threads.
+void BM_StepBroadStream(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const unsigned threads = static_cast<unsigned>(state.range(1));
+  std::vector<std::size_t> seen(threads);
+  for (auto _ : state) {
+    const scene::SceneTrees trees(f.scene, CcdParams{}, threads);
+    scene::stream_pairs(trees.trees(), threads, [&](const scene::FoundPair&, unsigned w) { return ++seen[w] > 0; });
+    benchmark::DoNotOptimize(seen.data());
+  }
+  step_label(state, f);
+}
+
+/// The whole earliest_toi step (broad phase and exact narrow phase with the shrinking window)
+/// on state.range(1) threads.
+void BM_StepEarliest(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const SceneOptions options{static_cast<unsigned>(state.range(1))};
+  for (auto _ : state) benchmark::DoNotOptimize(earliest_toi(f.scene, options));
+  step_label(state, f);
+}
+
+/// The scene with its positions at t = 1 a fraction `step` of the way: x0 + step (x1 - x0),
+/// the trial positions of a line search.
+std::vector<Vec3> at_step(const Scene& s, double step) {
+  std::vector<Vec3> x1(s.positions_t0.size());
+  for (std::size_t v = 0; v < x1.size(); ++v) {
+    const Vec3 &a = s.positions_t0[v], &b = s.positions_t1[v];
+    x1[v] = {a.x + step * (b.x - a.x), a.y + step * (b.y - a.y), a.z + step * (b.z - a.z)};
+  }
+  return x1;
+}
+
+constexpr double kLineSearchSteps[] = {0.5, 0.25, 0.125, 0.0625};
+
+/// A line search's first call: SceneBroadPhase built on the full step, then
+/// max_collision_free_step(), on state.range(1) threads.
+void BM_LineSearchFirst(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const SceneOptions options{static_cast<unsigned>(state.range(1))};
+  for (auto _ : state) {
+    const SceneBroadPhase broad(f.scene, options);
+    benchmark::DoNotOptimize(broad.max_collision_free_step());
+  }
+  step_label(state, f);
+}
+
+/// The line search's later calls: one SceneBroadPhase (built outside the timed loop), each
+/// iteration update() to the trial positions of the next shorter step (1/2, 1/4, 1/8, 1/16 in
+/// turn) and max_collision_free_step().
+void BM_LineSearchNext(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const SceneOptions options{static_cast<unsigned>(state.range(1))};
+  std::vector<std::vector<Vec3>> trials;
+  for (double step : kLineSearchSteps) trials.push_back(at_step(f.scene, step));
+  SceneBroadPhase broad(f.scene, options);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    broad.update(trials[k++ % trials.size()]);
+    benchmark::DoNotOptimize(broad.max_collision_free_step());
+  }
+  step_label(state, f);
+}
+
+/// The same trial steps answered by the free function (a fresh broad phase per call).
+void BM_LineSearchFresh(benchmark::State& state) {
+  const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
+  const SceneOptions options{static_cast<unsigned>(state.range(1))};
+  std::vector<Scene> trials;
+  for (double step : kLineSearchSteps) {
+    trials.push_back(f.scene);
+    trials.back().positions_t1 = at_step(f.scene, step);
+  }
+  std::size_t k = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(max_collision_free_step(trials[k++ % trials.size()], options));
+  step_label(state, f);
+}
+
 /// Peak resident memory of one 2-thread find_collisions step at `resolution` in this process:
 /// getrusage's ru_maxrss (KiB on Linux) after building the scene and after the step.
 int peak_memory(int resolution) {
@@ -266,6 +364,11 @@ BENCHMARK(BM_StepRefit) EXACTCCD_STEP_SIZES;
 BENCHMARK_CAPTURE(BM_StepNarrow, filtered, Method::filtered) EXACTCCD_STEP_SIZES;
 BENCHMARK_CAPTURE(BM_StepNarrow, naive, tools::Method::naive) EXACTCCD_STEP_SIZES;
 BENCHMARK(BM_StepWhole) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_StepBroadStream) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_StepEarliest) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_LineSearchFirst) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_LineSearchNext) EXACTCCD_STEP_SIZES;
+BENCHMARK(BM_LineSearchFresh) EXACTCCD_STEP_SIZES;
 
 #define EXACTCCD_SCENE_SIZES ->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_BroadPhase) EXACTCCD_SCENE_SIZES;
@@ -280,9 +383,161 @@ BENCHMARK(BM_IntersectionFree) EXACTCCD_SCENE_SIZES;
 
 }  // namespace
 
+/// One step given as two mesh files (--frames=T0,T1: e.g. the Scalable CCD dataset's cloth-ball
+/// frames), its topology and listed candidates (for the narrow-phase baselines).
+struct FramesFixture {
+  Scene scene;
+  scene::ScenePrimitives prim;
+};
+
+FramesFixture& frames() {
+  static FramesFixture f;
+  return f;
+}
+
+void frames_label(benchmark::State& state) {
+  const FramesFixture& f = frames();
+  state.counters["triangles"] = static_cast<double>(f.scene.triangles.size());
+  state.counters["candidates"] =
+      static_cast<double>(f.prim.candidates.vertex_face.size() + f.prim.candidates.edge_edge.size());
+}
+
+/// The narrow phase over the frames' listed candidates with one method (as BM_StepNarrow).
+template <class M>
+void BM_FramesNarrow(benchmark::State& state, M method) {
+  const FramesFixture& f = frames();
+  const unsigned threads = static_cast<unsigned>(state.range(0));
+  const auto& vf = f.prim.candidates.vertex_face;
+  const auto& ee = f.prim.candidates.edge_edge;
+  std::vector<std::size_t> hits(threads);
+  for (auto _ : state) {
+    scene::parallel_chunks(vf.size() + ee.size(), threads, 64, [&](std::size_t begin, std::size_t end, unsigned w) {
+      for (std::size_t k = begin; k < end; ++k) {
+        if (k < vf.size())
+          hits[w] += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), method).has_value();
+        else
+          hits[w] += toi(scene::edge_edge_query(f.scene, f.prim.edges[ee[k - vf.size()][0]], f.prim.edges[ee[k - vf.size()][1]]),
+                         method)
+                         .has_value();
+      }
+      return true;
+    });
+    benchmark::DoNotOptimize(hits.data());
+  }
+  frames_label(state);
+}
+
+void BM_FramesWhole(benchmark::State& state) {
+  const SceneOptions options{static_cast<unsigned>(state.range(0))};
+  for (auto _ : state) benchmark::DoNotOptimize(find_collisions(frames().scene, options));
+  frames_label(state);
+}
+
+void BM_FramesEarliest(benchmark::State& state) {
+  const SceneOptions options{static_cast<unsigned>(state.range(0))};
+  for (auto _ : state) benchmark::DoNotOptimize(earliest_toi(frames().scene, options));
+  frames_label(state);
+}
+
+void BM_FramesBroadStream(benchmark::State& state) {
+  const unsigned threads = static_cast<unsigned>(state.range(0));
+  std::vector<std::size_t> seen(threads);
+  for (auto _ : state) {
+    const scene::SceneTrees trees(frames().scene, CcdParams{}, threads);
+    scene::stream_pairs(trees.trees(), threads, [&](const scene::FoundPair&, unsigned w) { return ++seen[w] > 0; });
+    benchmark::DoNotOptimize(seen.data());
+  }
+  frames_label(state);
+}
+
+#ifdef EXACTCCD_BENCH_TBB
+// The project's pool (parallel.hpp: std::threads started per call, chunks handed out from one
+// atomic counter) against oneTBB's work stealing on the same two loops, for docs/scene.md's
+// choice: the narrow phase over the listed candidates (uneven costs) and the streamed broad
+// phase's pieces (tree pair tasks, counted).
+
+/// BM_FramesNarrow<filtered> with tbb::parallel_for (auto partitioner) in a task arena of
+/// state.range(0) threads.
+void BM_FramesNarrowTbb(benchmark::State& state) {
+  const FramesFixture& f = frames();
+  const int threads = static_cast<int>(state.range(0));
+  const auto& vf = f.prim.candidates.vertex_face;
+  const auto& ee = f.prim.candidates.edge_edge;
+  tbb::task_arena arena(threads);
+  tbb::enumerable_thread_specific<std::size_t> hits(0);
+  for (auto _ : state)
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vf.size() + ee.size()), [&](const auto& range) {
+        const numeric::DefaultFpEnvironment fp_environment;
+        std::size_t& h = hits.local();
+        for (std::size_t k = range.begin(); k < range.end(); ++k) {
+          if (k < vf.size())
+            h += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), Method::filtered).has_value();
+          else
+            h += toi(scene::edge_edge_query(f.scene, f.prim.edges[ee[k - vf.size()][0]], f.prim.edges[ee[k - vf.size()][1]]),
+                     Method::filtered)
+                     .has_value();
+        }
+      });
+    });
+  frames_label(state);
+}
+
+/// BM_FramesBroadStream's loop with tbb::parallel_for over the same pieces (grain 1).
+void BM_FramesBroadStreamTbb(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  tbb::task_arena arena(threads);
+  tbb::enumerable_thread_specific<std::size_t> seen(0);
+  for (auto _ : state) {
+    const scene::SceneTrees trees(frames().scene, CcdParams{}, static_cast<unsigned>(threads));
+    const auto tasks = trees.trees().pair_tasks(static_cast<unsigned>(threads));
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1), [&](const auto& range) {
+        std::size_t& n = seen.local();
+        for (std::size_t k = range.begin(); k < range.end(); ++k)
+          trees.trees().visit(tasks[k], [&](const scene::FoundPair&) { return ++n > 0; });
+      });
+    });
+  }
+  frames_label(state);
+}
+#endif
+
+/// --frames=T0,T1: registers the BM_Frames* benchmarks on that step (1 and 2 threads).
+void register_frames(const std::string& spec) {
+  const std::size_t comma = spec.find(',');
+  const io::TriangleMesh m0 = io::read_mesh(spec.substr(0, comma)), m1 = io::read_mesh(spec.substr(comma + 1));
+  FramesFixture& f = frames();
+  f.scene = Scene{m0.vertices, m1.vertices, m0.triangles, {}, {}};
+  f.prim = scene::scene_primitives(f.scene, {}, 2);
+  for (const auto* name : {"BM_FramesWhole", "BM_FramesEarliest", "BM_FramesBroadStream"}) {
+    auto* b = benchmark::RegisterBenchmark(name, std::string(name) == "BM_FramesWhole"      ? BM_FramesWhole
+                                                 : std::string(name) == "BM_FramesEarliest" ? BM_FramesEarliest
+                                                                                             : BM_FramesBroadStream);
+    b->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+  }
+  benchmark::RegisterBenchmark("BM_FramesNarrow/filtered", BM_FramesNarrow<Method>, Method::filtered)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+  benchmark::RegisterBenchmark("BM_FramesNarrow/naive", BM_FramesNarrow<tools::Method>, tools::Method::naive)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+#ifdef EXACTCCD_BENCH_TBB
+  benchmark::RegisterBenchmark("BM_FramesNarrowTbb/filtered", BM_FramesNarrowTbb)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+  benchmark::RegisterBenchmark("BM_FramesBroadStreamTbb", BM_FramesBroadStreamTbb)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+#endif
+}
+
 int main(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
+  for (int i = 1; i < argc; ++i) {
     if (std::strncmp(argv[i], "--peak_memory=", 14) == 0) return peak_memory(std::stoi(argv[i] + 14));
+    if (std::strncmp(argv[i], "--frames=", 9) == 0) {
+      register_frames(argv[i] + 9);
+      for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
+      --argc;
+      --i;
+    }
+  }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -10,12 +10,12 @@
 #endif
 
 #include "exactccd/exactccd.hpp"
-#include "filter/filtered_ccd.hpp"
-#include "filter/fp_environment.hpp"
+#include "numeric/fp_environment.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/volume_exclusion.hpp"
-#include "tools/methods.hpp"
+#include "pipeline/contact_question.hpp"
+#include "methods/methods.hpp"
 
 namespace {
 
@@ -60,7 +60,8 @@ void BM_IntervalStage(benchmark::State& state) {
   VertexFaceQuery q = kHit;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::filter::interval_stage(q, false));
+    exactccd::pipeline::Findings findings;
+    benchmark::DoNotOptimize(exactccd::filter::interval_stage(q, false, findings));
   }
 }
 BENCHMARK(BM_IntervalStage);
@@ -113,7 +114,7 @@ void BM_FilteredUnguarded(benchmark::State& state, const VertexFaceQuery& query)
   VertexFaceQuery q = query;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::filter::filtered(q, false, nullptr));
+    benchmark::DoNotOptimize(exactccd::pipeline::contact_question(q, exactccd::pipeline::Question{}, nullptr));
   }
 }
 BENCHMARK_CAPTURE(BM_FilteredUnguarded, filtered_miss_unguarded, kMiss);
@@ -124,7 +125,7 @@ BENCHMARK_CAPTURE(BM_FilteredUnguarded, filtered_hit_unguarded, kHit);
 void BM_FpEnvironmentGuard(benchmark::State& state, int rounding) {
   std::fesetround(rounding);
   for (auto _ : state) {
-    const exactccd::filter::DefaultFpEnvironment guard;
+    const exactccd::numeric::DefaultFpEnvironment guard;
     benchmark::DoNotOptimize(guard.changed());
   }
   std::fesetenv(FE_DFL_ENV);

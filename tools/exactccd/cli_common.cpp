@@ -26,7 +26,7 @@ namespace exactccd::cli {
 std::vector<QueryKind> all_kinds() {
   std::vector<QueryKind> out;
   std::size_t i = 0;
-  kinds::for_each_separation_kind([&](auto) { out.push_back(QueryKind{i++}); });
+  kinds::for_each_kind([&](auto) { out.push_back(QueryKind{i++}); });
   return out;
 }
 

@@ -16,7 +16,7 @@
 #include "kinds/primitive_kinds.hpp"
 #include "options.hpp"
 #include "scene/parallel.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace exactccd::cli {
 
@@ -33,7 +33,7 @@ struct UsageError : std::runtime_error {
 };
 
 /// A primitive kind at run time: the position of its description in
-/// kinds::for_each_separation_kind (lib/kinds/primitive_kinds.hpp: vf, ee, pe, pp, ee2, pe2,
+/// kinds::for_each_kind (lib/kinds/primitive_kinds.hpp: vf, ee, pe, pp, ee2, pe2,
 /// pp2), from which every name below is derived.
 struct QueryKind {
   std::size_t index = 0;
@@ -45,7 +45,7 @@ struct QueryKind {
 template <class Kind>
 QueryKind query_kind() {
   std::size_t i = 0, found = 0;
-  kinds::for_each_separation_kind([&](auto k) {
+  kinds::for_each_kind([&](auto k) {
     if (std::is_same_v<decltype(k), Kind>) found = i;
     ++i;
   });
@@ -58,13 +58,13 @@ auto visit_kind(QueryKind kind, F&& f) {
   using R = decltype(f(kinds::VertexFace{}));
   if constexpr (std::is_void_v<R>) {
     std::size_t i = 0;
-    kinds::for_each_separation_kind([&](auto k) {
+    kinds::for_each_kind([&](auto k) {
       if (i++ == kind.index) f(k);
     });
   } else {
     std::optional<R> out;
     std::size_t i = 0;
-    kinds::for_each_separation_kind([&](auto k) {
+    kinds::for_each_kind([&](auto k) {
       if (i++ == kind.index) out.emplace(f(k));
     });
     if (!out) throw std::logic_error("visit_kind: no kind at index " + std::to_string(kind.index));
@@ -79,7 +79,7 @@ constexpr bool is_contact_kind = std::is_same_v<Kind, kinds::VertexFace> || std:
 /// True when the run-time kind is vertex-face or edge-edge (is_contact_kind).
 bool is_contact_kind_at(QueryKind k);
 
-/// Every kind, in for_each_separation_kind order.
+/// Every kind, in for_each_kind order.
 std::vector<QueryKind> all_kinds();
 /// A kind's --kind value ("vf", "ee", ...).
 std::string kind_name(QueryKind k);

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "exact/degeneracy.hpp"
+#include "degeneracy/degeneracy.hpp"
 #include "io/input_file.hpp"
 #include "partial.hpp"
 #include "subcommands.hpp"

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "exact/degeneracy.hpp"
+#include "degeneracy/degeneracy.hpp"
 #include "exactccd/plugin.h"
 #include "fuzz/families.hpp"
 #include "fuzz/fuzz_input.hpp"

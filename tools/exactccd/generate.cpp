@@ -13,8 +13,8 @@
 #include "fuzz/families.hpp"
 #include "output_file.hpp"
 #include "rigid_cli.hpp"
-#include "scene/procedural_scenes.hpp"
-#include "scene/sim_queries.hpp"
+#include "scenes/procedural_scenes.hpp"
+#include "scenes/sim_queries.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -63,7 +63,7 @@ const CommandSpec& command() {
         "  scene       one time step of a procedural scene as two meshes, DIR/T0.obj (t = 0) and\n"
         "              DIR/T1.obj (t = 1), for exactccd scene\n"
         "  sim         simulation-like queries: the broad-phase candidates of one time step of a\n"
-        "              procedural scene (lib/scene/procedural_scenes.hpp), written to\n"
+        "              procedural scene (lib/scenes/procedural_scenes.hpp), written to\n"
         "              DIR/sim-<scene>-vertex-face.csv and DIR/sim-<scene>-edge-edge.csv; the truth\n"
         "              column is the exact answer of the reference path (Method::exact) unless\n"
         "              --truth filtered\n"

@@ -13,8 +13,8 @@
 #include "output_file.hpp"
 #include "rigid/rigid_layout.hpp"
 #include "rigid_cli.hpp"
-#include "scene/rigid_sim.hpp"
-#include "scene/sim_queries.hpp"  // select_queries
+#include "scenes/rigid_sim.hpp"
+#include "scenes/sim_queries.hpp"  // select_queries
 
 namespace exactccd::cli {
 namespace {

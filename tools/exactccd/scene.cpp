@@ -1,5 +1,8 @@
 // exactccd scene: scene-level CCD of one time step given as two mesh files; and the OBJ writer
 // of `exactccd generate scene`.
+#include <sys/resource.h>
+
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -10,8 +13,10 @@
 #include "io/mesh_file.hpp"
 #include "io/obj.hpp"
 #include "output_file.hpp"
-#include "scene/procedural_scenes.hpp"
+#include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
+#include "scene/step_stats.hpp"
+#include "scene/streamed_step.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -23,7 +28,7 @@ const CommandSpec& command() {
   static const CommandSpec spec = [] {
     CommandSpec c;
     c.name = "scene";
-    c.usage = "usage: exactccd scene T0.obj T1.obj [--min-distance D] [--tmax T] [--json] [--threads N]";
+    c.usage = "usage: exactccd scene T0.obj T1.obj [--min-distance D] [--tmax T] [--json] [--stats] [--threads N]";
     c.description =
         "One time step of a triangle mesh whose vertices move linearly from their positions in T0.obj\n"
         "(t = 0) to those in T1.obj (t = 1); both files must have the same vertex count and faces.\n"
@@ -52,7 +57,13 @@ const CommandSpec& command() {
                     "([vertex, triangle] lists), ee_pairs ([a0, a1, b0, b1] lists), earliest_toi\n"
                     "([lo, hi] or null), max_safe_step, end_intersection_free (both ends),\n"
                     "t0_intersection_free, t1_intersection_free"),
-        threads_option("", "narrow phase on N threads (default: all cores; same results)"),
+        flag_option("--stats",
+                    "also print where the step's time went: reading the files, the set-up (topology,\n"
+                    "boxes, trees), the streamed broad and narrow phase (wall time, and the CPU time\n"
+                    "of the tree traversal and of the narrow phase, summed over the threads), each intersection-free check; the\n"
+                    "candidates per kind; the peak memory of the process (text: after the summary\n"
+                    "lines; --json: a \"stats\" member)"),
+        threads_option("", "broad and narrow phase on N threads (default: all cores; same results)"),
     };
     for (OptionSpec& o : separation_option_specs()) c.options.push_back(o);
     c.epilogue =
@@ -90,6 +101,129 @@ std::string number(double x) {
 
 std::string interval(const TimeInterval& t) { return "[" + number(t.lo) + ", " + number(t.hi) + "]"; }
 
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// The peak resident memory of this process so far (getrusage's ru_maxrss, KiB on Linux), MiB.
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+/// What --stats prints.
+struct StatsLine {
+  scene::StepStats step;
+  double read_seconds = 0, free0_seconds = 0, free1_seconds = 0, total_seconds = 0, peak_mib = 0;
+};
+
+/// intersection_free of the scene's triangles at these positions; its wall time in `seconds`.
+bool timed_intersection_free(const std::vector<Vec3>& positions, const Scene& s, unsigned threads, double& seconds) {
+  const auto start = Clock::now();
+  const bool free = intersection_free(positions, s.triangles, threads);
+  seconds = seconds_since(start);
+  return free;
+}
+
+std::string fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+std::string stats_text(const StatsLine& s) {
+  const scene::StepStats& t = s.step;
+  std::ostringstream out;
+  out << "time read files           " << fixed(s.read_seconds, 3) << " s\n"
+      << "time set-up               " << fixed(t.setup_seconds, 3) << " s (validation, topology, boxes, trees)\n"
+      << "time broad+narrow phase   " << fixed(t.stream_seconds, 3) << " s wall, " << t.workers
+      << " workers (CPU time: traversal " << fixed(t.traversal_thread_seconds, 3) << " s, narrow phase "
+      << fixed(t.narrow_thread_seconds, 3) << " s)\n"
+      << "time intersection-free    " << fixed(s.free0_seconds, 3) << " s at t0, " << fixed(s.free1_seconds, 3)
+      << " s at t1\n"
+      << "time total                " << fixed(s.total_seconds, 3) << " s\n"
+      << "candidates per kind       " << t.candidates[0] << " vf, " << t.candidates[1] << " ee, " << t.candidates[2]
+      << " pe, " << t.candidates[3] << " pp\n"
+      << "peak memory               " << fixed(s.peak_mib, 1) << " MiB (peak resident set of the process)\n";
+  return out.str();
+}
+
+std::string stats_json(const StatsLine& s) {
+  const scene::StepStats& t = s.step;
+  std::ostringstream out;
+  out << "{\"read_s\": " << fixed(s.read_seconds, 6) << ", \"setup_s\": " << fixed(t.setup_seconds, 6)
+      << ", \"stream_s\": " << fixed(t.stream_seconds, 6) << ", \"workers\": " << t.workers
+      << ", \"traversal_cpu_s\": " << fixed(t.traversal_thread_seconds, 6)
+      << ", \"narrow_cpu_s\": " << fixed(t.narrow_thread_seconds, 6)
+      << ", \"intersection_free_t0_s\": " << fixed(s.free0_seconds, 6)
+      << ", \"intersection_free_t1_s\": " << fixed(s.free1_seconds, 6) << ", \"total_s\": " << fixed(s.total_seconds, 6)
+      << ", \"candidates\": {\"vf\": " << t.candidates[0] << ", \"ee\": " << t.candidates[1]
+      << ", \"pe\": " << t.candidates[2] << ", \"pp\": " << t.candidates[3]
+      << "}, \"peak_rss_mib\": " << fixed(s.peak_mib, 1) << "}";
+  return out.str();
+}
+
+/// What one `exactccd scene` run found, and its --stats.
+struct SceneRun {
+  std::vector<Collision> collisions;
+  std::optional<TimeInterval> earliest;
+  double step = 0;
+  bool free0 = false, free1 = false;
+  StatsLine stats;
+};
+
+/// The broad-phase candidates the output counts: vertex-face and edge-edge (as streamed).
+std::size_t candidates_of(const SceneRun& run) { return run.stats.step.candidates[0] + run.stats.step.candidates[1]; }
+
+std::string json_report(const Scene& s, const SceneRun& run, bool with_stats) {
+  std::string vf_list, ee_list;
+  for (const Collision& c : run.collisions) {
+    if (c.kind == CollisionKind::vertex_face)
+      vf_list += (vf_list.empty() ? "[" : ", [") + std::to_string(c.vertex) + ", " + std::to_string(c.triangle) + "]";
+    else
+      ee_list += (ee_list.empty() ? "[" : ", [") + std::to_string(c.edge_a[0]) + ", " + std::to_string(c.edge_a[1]) +
+                 ", " + std::to_string(c.edge_b[0]) + ", " + std::to_string(c.edge_b[1]) + "]";
+  }
+  const auto boolean = [](bool b) { return b ? "true" : "false"; };
+  std::ostringstream out;
+  out << "{\"vertices\": " << s.positions_t0.size() << ", \"triangles\": " << s.triangles.size()
+      << ", \"candidates\": " << candidates_of(run) << ",\n \"vf_pairs\": [" << vf_list << "],\n \"ee_pairs\": ["
+      << ee_list << "],\n \"earliest_toi\": " << (run.earliest ? interval(*run.earliest) : "null")
+      << ", \"max_safe_step\": " << number(run.step) << ",\n \"end_intersection_free\": "
+      << boolean(run.free0 && run.free1) << ", \"t0_intersection_free\": " << boolean(run.free0)
+      << ", \"t1_intersection_free\": " << boolean(run.free1);
+  if (with_stats) out << ",\n \"stats\": " << stats_json(run.stats);
+  out << "}\n";
+  return out.str();
+}
+
+std::string text_report(const Scene& s, const SceneRun& run, bool with_stats) {
+  std::size_t vf = 0;
+  for (const Collision& c : run.collisions) vf += c.kind == CollisionKind::vertex_face;
+  const auto yes = [](bool b) { return b ? "yes" : "no"; };
+  std::ostringstream out;
+  out << "vertices                  " << s.positions_t0.size() << "\n"
+      << "triangles                 " << s.triangles.size() << "\n"
+      << "candidates                " << candidates_of(run) << " (" << run.stats.step.candidates[0] << " vf, "
+      << run.stats.step.candidates[1] << " ee)\n"
+      << "colliding vf pairs        " << vf << "\n"
+      << "colliding ee pairs        " << run.collisions.size() - vf << "\n"
+      << "earliest toi              " << (run.earliest ? interval(*run.earliest) : "none") << "\n"
+      << "max safe step             " << number(run.step) << "\n"
+      << "intersection-free at t0   " << yes(run.free0) << "\n"
+      << "intersection-free at t1   " << yes(run.free1) << "\n";
+  if (with_stats) out << stats_text(run.stats);
+  for (const Collision& c : run.collisions) {
+    if (c.kind == CollisionKind::vertex_face)
+      out << "vf " << c.vertex << " " << c.triangle;
+    else
+      out << "ee " << c.edge_a[0] << " " << c.edge_a[1] << " " << c.edge_b[0] << " " << c.edge_b[1];
+    out << " toi " << interval(c.toi) << "\n";
+  }
+  return out.str();
+}
+
 }  // namespace
 
 int run_scene(int argc, char** argv) {
@@ -106,60 +240,28 @@ int run_scene(int argc, char** argv) {
   scene_options.tmax = params.tmax;
   const std::vector<std::string>& files = options.positionals();
   if (files.size() != 2) throw UsageError("scene: expected two files, T0 T1 (.obj, .ply, .off or .stl; see exactccd scene --help)");
+  const auto start = Clock::now();
   const io::TriangleMesh m0 = io::read_mesh(files[0]), m1 = io::read_mesh(files[1]);
+  const double read_seconds = seconds_since(start);
   const Scene s = scene_of(files[0], m0, files[1], m1);
   try {
     validate(s);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("scene: ") + e.what());
   }
-  const scene::ScenePrimitives prim = scene::scene_primitives(s, params);
-  const std::size_t candidates = prim.candidates.vertex_face.size() + prim.candidates.edge_edge.size();
-  const std::vector<Collision> collisions = find_collisions(s, scene_options);
-  const std::optional<TimeInterval> earliest = earliest_toi(collisions);
-  const double step = max_collision_free_step(earliest, params.tmax);
-  const bool free0 = intersection_free(s.positions_t0, s.triangles);
-  const bool free1 = intersection_free(s.positions_t1, s.triangles);
-  std::size_t vf = 0;
-  for (const Collision& c : collisions) vf += c.kind == CollisionKind::vertex_face;
-  std::ostringstream out;
-  if (json) {
-    std::string vf_list, ee_list;
-    for (const Collision& c : collisions) {
-      if (c.kind == CollisionKind::vertex_face)
-        vf_list += (vf_list.empty() ? "[" : ", [") + std::to_string(c.vertex) + ", " + std::to_string(c.triangle) + "]";
-      else
-        ee_list += (ee_list.empty() ? "[" : ", [") + std::to_string(c.edge_a[0]) + ", " + std::to_string(c.edge_a[1]) +
-                   ", " + std::to_string(c.edge_b[0]) + ", " + std::to_string(c.edge_b[1]) + "]";
-    }
-    const auto boolean = [](bool b) { return b ? "true" : "false"; };
-    out << "{\"vertices\": " << s.positions_t0.size() << ", \"triangles\": " << s.triangles.size()
-        << ", \"candidates\": " << candidates << ",\n \"vf_pairs\": [" << vf_list << "],\n \"ee_pairs\": ["
-        << ee_list << "],\n \"earliest_toi\": " << (earliest ? interval(*earliest) : "null")
-        << ", \"max_safe_step\": " << number(step) << ",\n \"end_intersection_free\": " << boolean(free0 && free1)
-        << ", \"t0_intersection_free\": " << boolean(free0) << ", \"t1_intersection_free\": " << boolean(free1)
-        << "}\n";
-  } else {
-    const auto yes = [](bool b) { return b ? "yes" : "no"; };
-    out << "vertices                  " << s.positions_t0.size() << "\n"
-        << "triangles                 " << s.triangles.size() << "\n"
-        << "candidates                " << candidates << " (" << prim.candidates.vertex_face.size() << " vf, "
-        << prim.candidates.edge_edge.size() << " ee)\n"
-        << "colliding vf pairs        " << vf << "\n"
-        << "colliding ee pairs        " << collisions.size() - vf << "\n"
-        << "earliest toi              " << (earliest ? interval(*earliest) : "none") << "\n"
-        << "max safe step             " << number(step) << "\n"
-        << "intersection-free at t0   " << yes(free0) << "\n"
-        << "intersection-free at t1   " << yes(free1) << "\n";
-    for (const Collision& c : collisions) {
-      if (c.kind == CollisionKind::vertex_face)
-        out << "vf " << c.vertex << " " << c.triangle;
-      else
-        out << "ee " << c.edge_a[0] << " " << c.edge_a[1] << " " << c.edge_b[0] << " " << c.edge_b[1];
-      out << " toi " << interval(c.toi) << "\n";
-    }
-  }
-  std::cout << out.str();
+  // One streamed pass (scene/streamed_step.hpp): the candidates are counted, not stored.
+  SceneRun run;
+  run.collisions = scene::find_collisions(s, scene_options, &run.stats.step);
+  run.earliest = earliest_toi(run.collisions);
+  run.step = max_collision_free_step(run.earliest, params.tmax);
+  run.free0 = timed_intersection_free(s.positions_t0, s, scene_options.threads, run.stats.free0_seconds);
+  run.free1 = timed_intersection_free(s.positions_t1, s, scene_options.threads, run.stats.free1_seconds);
+  run.stats.read_seconds = read_seconds;
+  run.stats.total_seconds = seconds_since(start);
+  run.stats.peak_mib = peak_rss_mib();
+  const bool stats = options.flag("--stats");
+  const std::string out = json ? json_report(s, run, stats) : text_report(s, run, stats);
+  std::cout << out;
   return kExitOk;
 }
 

@@ -15,12 +15,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 PHASES = [
-    ("BM_StepBroad", "broad phase (tree)"),
+    ("BM_StepBroadStream", "broad phase (streamed, as the scene functions run it)"),
+    ("BM_StepBroad", "broad phase (tree, candidates listed)"),
     ("BM_StepRefit", "broad phase reused (SceneBroadPhase::update)"),
     ("BM_StepSweep", "broad phase (old sweep, 1 thread)"),
     ("BM_StepNarrow/filtered", "narrow, filtered (exact TOIs)"),
     ("BM_StepNarrow/naive", "narrow, naive"),
     ("BM_StepWhole", "whole step (find_collisions)"),
+    ("BM_StepEarliest", "whole step (earliest_toi)"),
 ]
 
 
@@ -49,29 +51,37 @@ def main(step_path, memory_path, png, note=""):
             memory[m["resolution"]] = m
     sizes = sorted({r for (_, r, _) in t})
     print(f"Medians of {context.get('num_cpus', '?')}-CPU wall times, one run ({context.get('date', '')}). {note}\n")
-    print("| triangles | candidates | threads | broad (tree) | broad reused (refit) | broad (old sweep, 1 thr.) | "
-          "narrow filtered | narrow naive | whole step | whole / naive narrow | (refit + narrow filtered) / naive "
-          "narrow | whole / naive narrow, 1-thread CPU times | whole, 1 thr. / 2 thr. | peak RSS per triangle (2 thr.) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| triangles | candidates | threads | broad, streamed | broad, listed (tree) | broad reused (refit) | "
+          "old sweep (1 thr.) | narrow filtered | narrow naive | find_collisions | earliest_toi | "
+          "find_collisions / naive narrow | earliest_toi / naive narrow | same, 1-thread CPU times | "
+          "1 thr. / 2 thr. (find_collisions, earliest_toi) | line search: first, next, fresh | "
+          "peak RSS per triangle (2 thr.) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    nan = (float("nan"), 0, 0, float("nan"))
     for r in sizes:
         for th in (1, 2):
-            g = lambda p: t.get((p, r, th), (float("nan"), 0, 0))[0]  # noqa: E731
+            g = lambda p: t.get((p, r, th), nan)[0]  # noqa: E731
             tri, cand = t[("BM_StepWhole", r, th)][1:3]
+            whole, earliest, naive = g("BM_StepWhole"), g("BM_StepEarliest"), g("BM_StepNarrow/naive")
             cpu = ""
             if th == 1:
-                cpu = f"{t[('BM_StepWhole', r, 1)][3] / t[('BM_StepNarrow/naive', r, 1)][3]:.1f}x"
-            whole, naive = g("BM_StepWhole"), g("BM_StepNarrow/naive")
-            sweep = t.get(("BM_StepSweep", r, 1), (float("nan"),))[0]
-            speed = t[("BM_StepWhole", r, 1)][0] / t[("BM_StepWhole", r, 2)][0] if th == 2 else None
+                c = lambda p: t.get((p, r, 1), nan)[3]  # noqa: E731
+                cpu = f"{c('BM_StepWhole') / c('BM_StepNarrow/naive'):.2f}x, {c('BM_StepEarliest') / c('BM_StepNarrow/naive'):.2f}x"
+            sweep = t.get(("BM_StepSweep", r, 1), nan)[0]
+            speed = ""
+            if th == 2:
+                one = lambda p: t.get((p, r, 1), nan)[0]  # noqa: E731
+                speed = f"{one('BM_StepWhole') / whole:.2f}x, {one('BM_StepEarliest') / earliest:.2f}x"
             mem = ""
             if th == 2 and r in memory:
                 m = memory[r]
                 mem = (f"{m['max_rss_kb_step'] * 1024 / m['triangles']:.0f} B "
                        f"({m['max_rss_kb_step'] / 1024:.0f} MiB; scene alone {m['max_rss_kb_scene'] / 1024:.0f} MiB)")
-            reused = (g("BM_StepRefit") + g("BM_StepNarrow/filtered")) / naive
-            print(f"| {tri:,} | {cand:,} | {th} | {g('BM_StepBroad'):.1f} ms | {g('BM_StepRefit'):.1f} ms | "
-                  f"{sweep:.1f} ms | {g('BM_StepNarrow/filtered'):.1f} ms | {naive:.1f} ms | {whole:.1f} ms | "
-                  f"{whole / naive:.1f}x | {reused:.1f}x | {cpu} | {'' if speed is None else f'{speed:.2f}x'} | {mem} |")
+            line = f"{g('BM_LineSearchFirst'):.1f}, {g('BM_LineSearchNext'):.1f}, {g('BM_LineSearchFresh'):.1f} ms"
+            print(f"| {tri:,} | {cand:,} | {th} | {g('BM_StepBroadStream'):.1f} ms | {g('BM_StepBroad'):.1f} ms | "
+                  f"{g('BM_StepRefit'):.1f} ms | {sweep:.1f} ms | {g('BM_StepNarrow/filtered'):.1f} ms | {naive:.1f} ms | "
+                  f"{whole:.1f} ms | {earliest:.1f} ms | {whole / naive:.2f}x | {earliest / naive:.2f}x | {cpu} | "
+                  f"{speed} | {line} | {mem} |")
     fig, ax = plt.subplots(figsize=(8, 5))
     styles = {1: "-", 2: "--"}
     for i, (phase, label) in enumerate(PHASES):

@@ -1,0 +1,101 @@
+// The one entry point of the library's queries (exactccd/ccd.hpp, exactccd/rational.hpp):
+// validation, the floating-point environment, then the method's stage lists
+// (pipeline/methods.hpp). Every public query function is a one-line call of answer_query or
+// answer_rational_query, which this file defines for every kind.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "api/number_text.hpp"
+#include "exact/exact_ccd.hpp"
+#include "exactccd/ccd.hpp"
+#include "exactccd/rational.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "numeric/fp_environment.hpp"
+#include "pipeline/methods.hpp"
+#include "separation/exact_separation.hpp"
+
+namespace exactccd {
+namespace {
+
+/// The public function a query of this type was asked through, for error messages.
+template <class Query>
+std::string function_name(bool want_toi) {
+  return "exactccd::" + std::string(kinds::kind_of<Query>::function) + (want_toi ? "_toi" : "_ccd");
+}
+
+/// Throws std::invalid_argument naming the function on a non-finite coordinate.
+template <class Query>
+void require_finite(const Query& q, bool want_toi) {
+  using Kind = kinds::kind_of<Query>;
+  for (const auto& v : rows(q)) {
+    bool finite = std::isfinite(v.x) && std::isfinite(v.y);
+    if constexpr (Kind::dimension == 3) finite = finite && std::isfinite(v.z);
+    if (!finite)
+      throw std::invalid_argument(function_name<Query>(want_toi) + ": non-finite coordinate (NaN or infinity) in the query");
+  }
+}
+
+/// Throws std::invalid_argument naming the function on a d that is negative or not finite, a
+/// tmax outside (0, 1] or an unknown method value (numbers as they read back: number_text.hpp).
+template <class Query>
+void require_valid(const CcdParams& p, Method method, bool want_toi) {
+  if (!(std::isfinite(p.min_distance) && p.min_distance >= 0))
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": min_distance must be finite and >= 0, not " +
+                                api::number_text(p.min_distance));
+  if (!(p.tmax > 0 && p.tmax <= 1))
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": tmax must be in (0, 1], not " + api::number_text(p.tmax));
+  if (method != Method::filtered && method != Method::exact)
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": unknown method " +
+                                std::to_string(static_cast<int>(method)));
+}
+
+}  // namespace
+
+template <class Query>
+std::optional<TimeInterval> answer_query(const Query& q, const CcdParams& params, Method method, bool want_toi,
+                                         StageCounters* counters) {
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  require_finite(q, want_toi);
+  require_valid<Query>(params, method, want_toi);
+  const pipeline::Question question{params, want_toi};
+  if (method == Method::exact) return pipeline::exact_method(q, question);
+  return pipeline::filtered_method(q, question, counters);
+}
+
+template <class RationalQuery>
+std::optional<TimeInterval> answer_rational_query(const RationalQuery& q, const RationalCcdParams& p, bool want_toi) {
+  const numeric::DefaultFpEnvironment fp_environment;  // CGAL's kernel filters with intervals
+  if (!(p.min_distance >= 0))
+    throw std::invalid_argument(function_name<RationalQuery>(want_toi) + ": min_distance must be >= 0");
+  if (!(p.tmax > 0 && p.tmax <= 1))
+    throw std::invalid_argument(function_name<RationalQuery>(want_toi) + ": tmax must be in (0, 1]");
+  constexpr bool contact_kind = std::is_same_v<RationalQuery, RationalVertexFaceQuery> ||
+                                std::is_same_v<RationalQuery, RationalEdgeEdgeQuery>;
+  if constexpr (contact_kind) {  // the contact question: the contact rule's exact path
+    if (p.min_distance == 0 && p.tmax == 1)
+      return want_toi ? exact::toi(q) : (exact::ccd(q) ? std::optional(TimeInterval{}) : std::nullopt);
+  }
+  return separation::exact_toi(q, p);
+}
+
+// The entry points of every kind (kinds::for_each_kind; tests/api/test_entry_points
+// calls each through the list, so that a kind missing here fails to link).
+template std::optional<TimeInterval> answer_query(const VertexFaceQuery&, const CcdParams&, Method, bool, StageCounters*);
+template std::optional<TimeInterval> answer_query(const EdgeEdgeQuery&, const CcdParams&, Method, bool, StageCounters*);
+template std::optional<TimeInterval> answer_query(const PointEdgeQuery&, const CcdParams&, Method, bool, StageCounters*);
+template std::optional<TimeInterval> answer_query(const PointPointQuery&, const CcdParams&, Method, bool, StageCounters*);
+template std::optional<TimeInterval> answer_query(const EdgeEdge2dQuery&, const CcdParams&, Method, bool, StageCounters*);
+template std::optional<TimeInterval> answer_query(const PointEdge2dQuery&, const CcdParams&, Method, bool, StageCounters*);
+template std::optional<TimeInterval> answer_query(const PointPoint2dQuery&, const CcdParams&, Method, bool, StageCounters*);
+
+template std::optional<TimeInterval> answer_rational_query(const RationalVertexFaceQuery&, const RationalCcdParams&, bool);
+template std::optional<TimeInterval> answer_rational_query(const RationalEdgeEdgeQuery&, const RationalCcdParams&, bool);
+template std::optional<TimeInterval> answer_rational_query(const RationalPointEdgeQuery&, const RationalCcdParams&, bool);
+template std::optional<TimeInterval> answer_rational_query(const RationalPointPointQuery&, const RationalCcdParams&, bool);
+template std::optional<TimeInterval> answer_rational_query(const RationalEdgeEdge2dQuery&, const RationalCcdParams&, bool);
+template std::optional<TimeInterval> answer_rational_query(const RationalPointEdge2dQuery&, const RationalCcdParams&, bool);
+template std::optional<TimeInterval> answer_rational_query(const RationalPointPoint2dQuery&, const RationalCcdParams&, bool);
+
+}  // namespace exactccd

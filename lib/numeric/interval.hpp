@@ -1,0 +1,57 @@
+// Interval arithmetic in doubles (CGAL::Interval_nt<false>) and what both interval stages (the
+// contact stage, filter/interval_stage.cpp; the separation walk, separation/separation_walk.cpp)
+// ask of an interval: its certain sign, its sign class, the next double of a cell.
+//
+// Soundness rests on the inclusion property: every interval computed contains the exact real
+// value of the quantity it stands for. Interval_nt<false> needs the rounding towards
+// +infinity, which the stages install (CGAL::Protect_FPU_rounding) for their duration.
+#pragma once
+
+#include <CGAL/Interval_nt.h>
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace exactccd::numeric {
+
+/// Intervals of doubles; only under the upward rounding of CGAL::Protect_FPU_rounding<true>.
+using Interval = CGAL::Interval_nt<false>;
+
+/// 1 / -1 when the interval is certainly positive / negative, 0 otherwise (it contains 0, or
+/// has NaN bounds).
+inline int certain_sign(const Interval& x) {
+  if (x.inf() > 0) return 1;
+  if (x.sup() < 0) return -1;
+  return 0;
+}
+
+/// Sign class of an interval: exactly [0, 0] is a certain zero (it encloses only 0).
+enum class SignClass { negative, zero, positive, unknown };
+
+/// The sign class of x.
+inline SignClass classify(const Interval& x) {
+  if (x.inf() > 0) return SignClass::positive;
+  if (x.sup() < 0) return SignClass::negative;
+  if (x.inf() == 0 && x.sup() == 0) return SignClass::zero;
+  return SignClass::unknown;
+}
+
+/// The sign class of an exact sign (-1, 0, 1).
+inline SignClass sign_class(int sign) {
+  return sign > 0 ? SignClass::positive : sign < 0 ? SignClass::negative : SignClass::zero;
+}
+
+/// The next double above x, for finite x >= 0 (every cell of the stages lies in [0, 1]): the
+/// bit patterns of the non-negative doubles are ordered as their values, so it is the pattern
+/// plus one (std::nextafter, a library call, showed in profiles of the narrowing loops).
+inline double next_up_nonnegative(double x) {
+  if (x == 0) return std::numeric_limits<double>::denorm_min();  // also for -0.0
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  ++bits;
+  std::memcpy(&x, &bits, sizeof bits);
+  return x;
+}
+
+}  // namespace exactccd::numeric

@@ -1,0 +1,125 @@
+// The two methods of the library as stage lists of the one protocol (pipeline/outcome.hpp,
+// docs/design.md 4b.3 and 5): every question's stage order reads in one function here, or in
+// contact_question.cpp for the contact question of vertex-face and edge-edge queries.
+// Included by the entry point (api/entry_point.cpp), which instantiates them for every kind.
+#pragma once
+
+#include <optional>
+#include <type_traits>
+
+#include "exactccd/stats.hpp"
+#include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
+#include "pipeline/contact_question.hpp"
+#include "pipeline/exact_stages.hpp"
+#include "pipeline/outcome.hpp"
+#include "pipeline/run_stages.hpp"
+#include "separation/separating_direction.hpp"
+#include "separation/separation_terms.hpp"
+#include "separation/separation_walk.hpp"
+
+namespace exactccd::pipeline {
+
+/// The kinds whose contact question has stages of its own (kinds::HasContactStages: the volume
+/// filter and the contact rule of lib/contact): vertex-face and edge-edge.
+template <class Query>
+inline constexpr bool has_contact_stages = kinds::HasContactStages<kinds::kind_of<Query>>::value;
+
+/// The contact (d = 0) question of a query as an edge-edge query with the same answer and TOI:
+/// a point is a zero-length edge, and a 2D query lies in the plane z = 0.
+template <class Query>
+EdgeEdgeQuery as_edge_edge(const Query& q) {
+  constexpr int P = kinds::kind_of<Query>::points;
+  const auto x = separation::points3<double>(q);  // 2D points at z = 0
+  // Which point of the query each edge end is: (p, p) against (a, b) or (q, q).
+  constexpr std::array<int, 4> ends = P == 4 ? std::array<int, 4>{0, 1, 2, 3}
+                                      : P == 3 ? std::array<int, 4>{0, 0, 1, 2}
+                                               : std::array<int, 4>{0, 0, 1, 1};
+  std::array<Vec3, 8> e;
+  for (int at = 0; at < 2; ++at)
+    for (int i = 0; i < 4; ++i) e[at * 4 + i] = x[at * P + ends[i]];
+  return from_rows<EdgeEdgeQuery>(e);
+}
+
+/// The contact question of a query of any kind: its own contact stages, or those of the edge-edge
+/// query it is (as_edge_edge).
+template <class Query>
+std::optional<TimeInterval> contact_of_any_kind(const Query& q, const Question& question, StageCounters* counters) {
+  if constexpr (has_contact_stages<Query>)
+    return contact_question(q, question, counters);
+  else
+    return contact_question(as_edge_edge(q), question, counters);
+}
+
+/// The contact question of the point and 2D kinds after their separating direction: the contact
+/// stages of the edge-edge query they are (counted there).
+struct ContactAsEdgeEdgeStage {
+  static constexpr Counter counter = nullptr;  ///< counts for itself, at the contact stage deciding
+  /// The contact stages' answer.
+  template <class Query>
+  Outcome operator()(const Work<Query>& work) const {
+    const auto toi = contact_question(as_edge_edge(work.query()), work.question, work.counters);
+    return toi ? Outcome::collides(toi) : Outcome::separate();
+  }
+};
+
+/// The minimum-separation question, for the answer alone (no TOI asked): touching within
+/// [0, tmax] is being within d, and the contact stages decide most touching pairs far more
+/// cheaply than the separation walk. A collision is counted at the contact stage that found it
+/// (its TOI t0 bounds the earliest time within d from above: [0, hi] encloses it); otherwise
+/// nothing is counted, and GMP or CGAL use is handed over (used_gmp: the deciding stage then
+/// counts as `integer`; the fixed-width integer stage allocates nothing and does not count).
+struct ContactProbeStage {
+  static constexpr Counter counter = nullptr;  ///< counts for itself (above)
+  /// The probe, for the answer alone.
+  template <class Query>
+  Outcome operator()(Work<Query>& work) const {
+    if (work.question.want_toi) return Outcome::undecided();
+    StageCounters probe;
+    const auto touch = contact_of_any_kind(work.query(), Question{{0.0, work.question.params.tmax}, false}, &probe);
+    if (touch) {
+      if (work.counters) *work.counters += probe;
+      return Outcome::collides(TimeInterval{0.0, touch->hi});
+    }
+    work.findings.used_gmp = probe.integer + probe.exact > 0;
+    return Outcome::undecided();
+  }
+};
+
+/// A query of any kind by the filtered method (the question validated by the entry point):
+/// certified floating-point stages first, the exact path last, each query counted at the stage
+/// deciding it (in `counters`, may be null).
+template <class Query>
+std::optional<TimeInterval> filtered_method(const Query& q, const Question& question, StageCounters* counters) {
+  if (question.params.min_distance == 0) {  // the contact question
+    if constexpr (has_contact_stages<Query>) {
+      return contact_question(q, question, counters);
+    } else {
+      Work<Query> work{q, question, counters};
+      return run_stages(work, separation::SeparatingDirectionStage{}, ContactAsEdgeEdgeStage{});
+    }
+  }
+  Work<Query> work{q, question, counters};  // the minimum-separation question
+  return run_stages(work,
+                    separation::SeparatingDirectionStage{},  // a direction keeps them > d apart
+                    ContactProbeStage{},                     // answer alone: touching is within d
+                    separation::SeparationWalkStage{},       // the terms over time cells, intervals
+                    ExactSeparationStage{});                 // CGAL's algebraic kernel: always decides
+}
+
+/// A query of any kind by the exact method (GMP and CGAL throughout; not counted): the contact
+/// rule for vertex-face and edge-edge at d = 0 (the reference of the contact question), the
+/// minimum-separation terms otherwise (at d = 0 an independent derivation).
+template <class Query>
+std::optional<TimeInterval> exact_method(const Query& q, const Question& question) {
+  if constexpr (has_contact_stages<Query>) {
+    if (question.params.min_distance == 0) {
+      Work<Query> work{q, {question.params, question.want_toi || question.params.tmax < 1}, nullptr};
+      return cut(run_stages(work, ExactContactStage{}), question.params.tmax);
+    }
+  }
+  Work<Query> work{q, question, nullptr};
+  return run_stages(work, ExactSeparationStage{});
+}
+
+}  // namespace exactccd::pipeline
