@@ -1,5 +1,5 @@
 // The property the libFuzzer targets check on every decoded query (and
-// tests/test_fuzz_regressions.cpp on the committed corpus): the filtered method answers
+// tests/datasets/test_fuzz_regressions.cpp on the committed corpus): the filtered method answers
 // exactly as the exact (CGAL) reference, with the identical time of impact (both are the
 // tightest double interval of the same exact time, so they must be bit-identical), each
 // method's ccd agrees with its toi, and the filtered answer does not depend on the order of

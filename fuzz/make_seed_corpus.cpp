@@ -11,7 +11,7 @@
 //   grid-*          grid mode with degenerate edits (coplanar, shared vertex, subnormal, 1e300,
 //                   per-axis scales from 2^-1070 to 2^1000).
 // The wide seeds exceed the fuzzers' default exponent-spread limit: only the full-range
-// configuration (docs/fuzzing.md) checks them; tests/test_fuzz_regressions.cpp checks them all.
+// configuration (docs/fuzzing.md) checks them; tests/datasets/test_fuzz_regressions.cpp checks them all.
 // The committed corpus (fuzz/corpus/) is this program's output; CTest checks it is fresh.
 // Usage: make_seed_corpus OUT_DIR
 #include <cstdio>
@@ -38,7 +38,7 @@ void write(const fs::path& path, const Bytes& bytes) {
 }
 
 /// The reported stage-1 query (static triangle (0,0,0), (2^200,0,1), (0,2^-538,0), p crossing
-/// its plane inside at t = 1/2) and its edge-edge analogue (tests/test_wide_exponents.cpp).
+/// its plane inside at t = 1/2) and its edge-edge analogue (tests/datasets/test_wide_exponents.cpp).
 void write_reported(const fs::path& dir, kinds::VertexFace) {
   const Vec3 a{0, 0, 0}, b{0x1p200, 0, 1}, c{0, 0x1p-538, 0};
   write(dir / "wide-reported-stage1",

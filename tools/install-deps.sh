@@ -7,9 +7,9 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
   libgtest-dev libbenchmark-dev libeigen3-dev doxygen
   libtbb-dev
-  python3-matplotlib
+  python3-matplotlib python3-setuptools python3-wheel python3-pip python3-venv
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis
-  clang libclang-rt-dev
+  clang clang-tidy libclang-rt-dev
   slurm-wlm munge
 )
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The hand-derived minimum-separation catalogue (tests/test_min_separation_catalogue.cpp).
+"""The hand-derived minimum-separation catalogue (tests/separation/test_min_separation_catalogue.cpp).
 
 Every case's answer and TOI is derived by hand (the `why` line); this script only
   1. checks each derivation with exact rational arithmetic (fractions) and an independent

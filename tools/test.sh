@@ -4,7 +4,10 @@
 # -march=native, then the libFuzzer targets built with clang and their smoke runs
 # (docs/fuzzing.md).
 # Usage: bash tools/test.sh     (build directories: build/, build-asan/, build-fuzz-clang/)
-# EXACTCCD_SKIP_SANITIZERS=1 and EXACTCCD_SKIP_FUZZERS=1 skip those passes (CI runs them all).
+# Then the Python package installed with pip into a fresh virtual environment and its pytest
+# suite run against it (tools/test_pip_install.sh).
+# EXACTCCD_SKIP_SANITIZERS=1, EXACTCCD_SKIP_FUZZERS=1 and EXACTCCD_SKIP_PIP=1 skip those passes
+# (CI runs them all).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
@@ -13,7 +16,11 @@ jobs=$(nproc 2>/dev/null || echo 2)
 echo "== [${SECONDS} s] Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEXACTCCD_WERROR=ON
 cmake --build build -j"$jobs"
-ctest --test-dir build --output-on-failure -j"$jobs"
+# The pytest files (python.test_*) run once, against the pip-installed package, in the pip pass
+# below (tools/test_pip_install.sh runs every one of them); here only without that pass.
+release_skip=()
+if [ "${EXACTCCD_SKIP_PIP:-0}" != "1" ]; then release_skip=(-E '^python\.test_'); fi
+ctest --test-dir build --output-on-failure -j"$jobs" "${release_skip[@]}"
 
 if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
   # Also built with -march=native (FMA, AVX where the machine has them; the library keeps
@@ -41,5 +48,11 @@ if [ "${EXACTCCD_SKIP_FUZZERS:-0}" != "1" ]; then
         -DEXACTCCD_WERROR=ON
   cmake --build build-fuzz-clang -j"$jobs"
   ctest --test-dir build-fuzz-clang --output-on-failure -j"$jobs" -R '^fuzz\.'
+fi
+if [ "${EXACTCCD_SKIP_PIP:-0}" != "1" ]; then
+  # The Python package as users install it: pip install . (offline) into a fresh virtual
+  # environment, the pytest suite against the installed package, pip wheel, --user, uninstall.
+  echo "== [${SECONDS} s] pip install . and pytest of the installed package (tools/test_pip_install.sh)"
+  bash tools/test_pip_install.sh build-pip-test
 fi
 echo "== [${SECONDS} s] all passes done"

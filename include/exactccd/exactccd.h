@@ -19,7 +19,7 @@ typedef enum exactccd_status {
   EXACTCCD_ERROR_NON_FINITE = 1, /* a coordinate is NaN or infinite */
   EXACTCCD_ERROR_NULL = 2,       /* a required pointer is NULL */
   EXACTCCD_ERROR_INTERNAL = 3,   /* unexpected failure (e.g. out of memory) */
-  EXACTCCD_ERROR_PARAMETER = 4,  /* unknown kind, min_distance < 0 or not finite, tmax not in (0, 1] */
+  EXACTCCD_ERROR_PARAMETER = 4,  /* unknown kind, min_distance < 0 or not finite, tmax not in (0, 1], threads > 1024 */
   EXACTCCD_ERROR_INDEX = 5,      /* a candidate's vertex index is out of range or repeated */
   EXACTCCD_ERROR_CAPACITY = 6,   /* the output arrays are too small (*count holds the size needed) */
   EXACTCCD_ERROR_ROTATION = 7    /* a rigid body's quaternion path (1 - t) q0 + t q1 vanishes in [0, 1] */
@@ -84,8 +84,9 @@ typedef struct exactccd_candidates {
 /* The batch narrow phase over candidates. Common arguments: positions_t0 and positions_t1, 3 *
  * vertex_count doubles (x y z per vertex, at t = 0 and t = 1; NULL allowed when vertex_count is
  * 0); the candidates; min_distance (>= 0) and tmax (in (0, 1]) as for exactccd_ccd; threads
- * (0: every hardware thread; the answers do not depend on it). Statuses: EXACTCCD_ERROR_NULL,
- * EXACTCCD_ERROR_PARAMETER (also for more than INT_MAX vertices), EXACTCCD_ERROR_NON_FINITE,
+ * in 0..1024 (0: every hardware thread; the answers do not depend on it). Statuses:
+ * EXACTCCD_ERROR_NULL, EXACTCCD_ERROR_PARAMETER (also for more than INT_MAX vertices or more
+ * than 1024 threads), EXACTCCD_ERROR_NON_FINITE,
  * EXACTCCD_ERROR_INDEX, EXACTCCD_ERROR_INTERNAL; outputs are written only on EXACTCCD_OK. */
 
 /* The earliest time of impact over the candidates: *collides = 1 and [*lo, *hi] the tightest
@@ -143,6 +144,11 @@ exactccd_status exactccd_rigid_toi(int kind, const double* query, double min_dis
 
 /* A static description of a status, e.g. for error messages. */
 const char* exactccd_status_string(exactccd_status status);
+
+/* The library's version, "MAJOR.MINOR.PATCH" (a static string): the version of the library
+ * linked, where EXACTCCD_VERSION_STRING of exactccd/version.h is that of the headers compiled
+ * against. */
+const char* exactccd_version(void);
 
 #ifdef __cplusplus
 }

@@ -31,8 +31,10 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "exactccd/types.hpp"
@@ -61,21 +63,42 @@ struct Scene2d {
   std::vector<int> points;                     ///< points (those on an edge add nothing: EE covers them)
 };
 
+/// The most threads a scene function takes (SceneOptions::threads): the same range, 0..1024,
+/// in the C API, the Python module and the command line (which takes 1..1024).
+constexpr unsigned kMaxThreads = 1024;
+
 /// Options of the scene functions.
 struct SceneOptions {
-  /// Threads of the broad and the narrow phase; 0 means std::thread::hardware_concurrency();
-  /// at most 1024 are used, and fewer when the system refuses to start more. The results do
-  /// not depend on it.
+  /// Threads of the broad and the narrow phase, 0..kMaxThreads (1024); 0 means
+  /// std::thread::hardware_concurrency() (at most 1024 of them). A larger value is refused
+  /// (std::invalid_argument); fewer threads run when the system refuses to start more. The
+  /// results do not depend on it.
   unsigned threads = 0;
   /// The minimum separation d: a pair collides when its primitives come within distance <= d
   /// (Euclidean, between the closed primitives). Finite and >= 0; 0 asks for contact.
   double min_distance = 0.0;
   /// The time limit: only times t in [0, tmax] count. In (0, 1].
   double tmax = 1.0;
+  /// Cancellation (for interactive callers, e.g. Ctrl-C in the Python module): when not null,
+  /// the call's parallel loops (broad and narrow phase) check *cancel between pieces of work
+  /// of a few hundred queries or boxes, and once another thread sets it to true the workers
+  /// stop and the function throws exactccd::Cancelled (no partial result). The flag must
+  /// outlive the call; nullptr (the default): never cancelled. SceneBroadPhase honours it in
+  /// its constructor only (update() is not cancellable).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
-/// Throws std::invalid_argument when options.min_distance is negative, NaN or infinite, or
-/// options.tmax is not in (0, 1]. Every scene function taking SceneOptions calls it first.
+/// Thrown by a scene function (scene.hpp, candidates.hpp) whose SceneOptions::cancel flag was
+/// set during the call.
+class Cancelled : public std::runtime_error {
+ public:
+  /// The exception with the message "exactccd: cancelled".
+  Cancelled() : std::runtime_error("exactccd: cancelled") {}
+};
+
+/// Throws std::invalid_argument when options.min_distance is negative, NaN or infinite,
+/// options.tmax is not in (0, 1], or options.threads exceeds kMaxThreads. Every scene
+/// function taking SceneOptions calls it first.
 void validate(const SceneOptions& options);
 
 /// Which kind of pair a Collision is.

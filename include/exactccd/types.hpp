@@ -202,7 +202,7 @@ inline bool operator==(const TimeInterval& a, const TimeInterval& b) {
 
 /// How a query is answered. Both methods return the exact answer; they differ in speed.
 /// (The non-robust textbook baselines the project compares against are not part of the
-/// library: they live in its tools, lib/baseline/ and tools::Method.)
+/// library: they live in its tools, tools/lib/baseline/ and tools::Method.)
 enum class Method {
   filtered,  ///< certified floating-point filters, exact fallback (exact; the default)
   exact,     ///< exact rational arithmetic and CGAL's algebraic kernel (slow reference)

@@ -9,7 +9,7 @@
 
 #include "exactccd/candidates.hpp"
 #include "exactccd/exactccd.h"
-#include "numeric/fp_environment.hpp"
+#include "scene/parallel.hpp"
 
 namespace {
 
@@ -41,9 +41,10 @@ exactccd_status with_candidates(const double* x0, const double* x1, std::size_t 
   if ((c->vertex_face_count > 0 && !c->vertex_face) || (c->edge_edge_count > 0 && !c->edge_edge) ||
       (c->point_edge_count > 0 && !c->point_edge) || (c->point_point_count > 0 && !c->point_point))
     return EXACTCCD_ERROR_NULL;
-  const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   if (!(std::isfinite(d) && d >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
   if (n > static_cast<std::size_t>(INT_MAX)) return EXACTCCD_ERROR_PARAMETER;
+  if (threads > kMaxThreads) return EXACTCCD_ERROR_PARAMETER;  // the range of SceneOptions::threads
   for (std::size_t i = 0; i < 3 * n; ++i)
     if (!std::isfinite(x0[i]) || !std::isfinite(x1[i])) return EXACTCCD_ERROR_NON_FINITE;
   try {

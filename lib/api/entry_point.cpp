@@ -43,9 +43,9 @@ template <class Query>
 void require_valid(const CcdParams& p, Method method, bool want_toi) {
   if (!(std::isfinite(p.min_distance) && p.min_distance >= 0))
     throw std::invalid_argument(function_name<Query>(want_toi) + ": min_distance must be finite and >= 0, not " +
-                                api::number_text(p.min_distance));
+                                shortest_text(p.min_distance));
   if (!(p.tmax > 0 && p.tmax <= 1))
-    throw std::invalid_argument(function_name<Query>(want_toi) + ": tmax must be in (0, 1], not " + api::number_text(p.tmax));
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": tmax must be in (0, 1], not " + shortest_text(p.tmax));
   if (method != Method::filtered && method != Method::exact)
     throw std::invalid_argument(function_name<Query>(want_toi) + ": unknown method " +
                                 std::to_string(static_cast<int>(method)));

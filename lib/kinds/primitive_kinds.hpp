@@ -112,6 +112,10 @@ struct PointEdge {
   static constexpr std::array<Feature, 3> features{{{FeaturePair::point_edge, {0, 1, 2, 0}},
                                                      {FeaturePair::point_point, {0, 1, 0, 0}},
                                                      {FeaturePair::point_point, {0, 2, 0, 0}}}};
+  /// The contact question (d = 0) is that of the edge-edge query of this kind's points
+  /// {0, 0, 1, 2} (a point is a zero-length edge: (p, p) against (a, b)): it has no contact stages of its own.
+  using ContactKind = EdgeEdge;
+  static constexpr std::array<int, 4> contact_points{0, 0, 1, 2};
 };
 
 /// Point-point: a point p against a point q.
@@ -127,6 +131,10 @@ struct PointPoint {
   static constexpr int dimension = 3;
   static constexpr int first_points = 1;
   static constexpr std::array<Feature, 1> features{{{FeaturePair::point_point, {0, 1, 0, 0}}}};
+  /// The contact question (d = 0) is that of the edge-edge query of this kind's points
+  /// {0, 0, 1, 1} ((p, p) against (q, q)): it has no contact stages of its own.
+  using ContactKind = EdgeEdge;
+  static constexpr std::array<int, 4> contact_points{0, 0, 1, 1};
 };
 
 /// Edge-edge in the plane. The features are those of EdgeEdge: with every z = 0 its edge-edge
@@ -143,6 +151,10 @@ struct EdgeEdge2d {
   static constexpr int dimension = 2;
   static constexpr int first_points = 2;
   static constexpr auto features = EdgeEdge::features;
+  /// The contact question (d = 0) is that of the edge-edge query of this kind's points
+  /// {0, 1, 2, 3} (the same edges at z = 0): it has no contact stages of its own.
+  using ContactKind = EdgeEdge;
+  static constexpr std::array<int, 4> contact_points{0, 1, 2, 3};
 };
 
 /// Point-edge in the plane.
@@ -158,6 +170,10 @@ struct PointEdge2d {
   static constexpr int dimension = 2;
   static constexpr int first_points = 1;
   static constexpr auto features = PointEdge::features;
+  /// The contact question (d = 0) is that of the edge-edge query of this kind's points
+  /// {0, 0, 1, 2} ((p, p) against (a, b) at z = 0): it has no contact stages of its own.
+  using ContactKind = EdgeEdge;
+  static constexpr std::array<int, 4> contact_points{0, 0, 1, 2};
 };
 
 /// Point-point in the plane.
@@ -173,6 +189,10 @@ struct PointPoint2d {
   static constexpr int dimension = 2;
   static constexpr int first_points = 1;
   static constexpr auto features = PointPoint::features;
+  /// The contact question (d = 0) is that of the edge-edge query of this kind's points
+  /// {0, 0, 1, 1} ((p, p) against (q, q) at z = 0): it has no contact stages of its own.
+  using ContactKind = EdgeEdge;
+  static constexpr std::array<int, 4> contact_points{0, 0, 1, 1};
 };
 
 /// The kind of a query type (double, rational, interval or integer coordinates alike).

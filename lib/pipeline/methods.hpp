@@ -25,40 +25,41 @@ namespace exactccd::pipeline {
 template <class Query>
 inline constexpr bool has_contact_stages = kinds::HasContactStages<kinds::kind_of<Query>>::value;
 
-/// The contact (d = 0) question of a query as an edge-edge query with the same answer and TOI:
-/// a point is a zero-length edge, and a 2D query lies in the plane z = 0.
+/// The contact (d = 0) question of a query of a kind without contact stages as the query of
+/// its ContactKind (kinds/primitive_kinds.hpp: its points, in the order of contact_points; a
+/// point is a zero-length edge, a 2D query lies in the plane z = 0) with the same answer and TOI.
 template <class Query>
-EdgeEdgeQuery as_edge_edge(const Query& q) {
-  constexpr int P = kinds::kind_of<Query>::points;
+auto as_contact_query(const Query& q) {
+  using Kind = kinds::kind_of<Query>;
+  using ContactKind = typename Kind::ContactKind;
+  static_assert(kinds::HasContactStages<ContactKind>::value, "a kind's contact question needs contact stages");
+  constexpr int P = Kind::points;
+  constexpr int C = ContactKind::points;
   const auto x = separation::points3<double>(q);  // 2D points at z = 0
-  // Which point of the query each edge end is: (p, p) against (a, b) or (q, q).
-  constexpr std::array<int, 4> ends = P == 4 ? std::array<int, 4>{0, 1, 2, 3}
-                                      : P == 3 ? std::array<int, 4>{0, 0, 1, 2}
-                                               : std::array<int, 4>{0, 0, 1, 1};
-  std::array<Vec3, 8> e;
+  std::array<Vec3, 2 * C> e;
   for (int at = 0; at < 2; ++at)
-    for (int i = 0; i < 4; ++i) e[at * 4 + i] = x[at * P + ends[i]];
-  return from_rows<EdgeEdgeQuery>(e);
+    for (int i = 0; i < C; ++i) e[at * C + i] = x[at * P + Kind::contact_points[i]];
+  return from_rows<typename ContactKind::template Query<double>>(e);
 }
 
-/// The contact question of a query of any kind: its own contact stages, or those of the edge-edge
-/// query it is (as_edge_edge).
+/// The contact question of a query of any kind: its own contact stages, or those of the query of
+/// its ContactKind it is (as_contact_query).
 template <class Query>
 std::optional<TimeInterval> contact_of_any_kind(const Query& q, const Question& question, StageCounters* counters) {
   if constexpr (has_contact_stages<Query>)
     return contact_question(q, question, counters);
   else
-    return contact_question(as_edge_edge(q), question, counters);
+    return contact_question(as_contact_query(q), question, counters);
 }
 
-/// The contact question of the point and 2D kinds after their separating direction: the contact
-/// stages of the edge-edge query they are (counted there).
-struct ContactAsEdgeEdgeStage {
+/// The contact question of the kinds without contact stages after their separating direction:
+/// the contact stages of the query of their ContactKind they are (counted there).
+struct ContactOfEmbeddingStage {
   static constexpr Counter counter = nullptr;  ///< counts for itself, at the contact stage deciding
   /// The contact stages' answer.
   template <class Query>
   Outcome operator()(const Work<Query>& work) const {
-    const auto toi = contact_question(as_edge_edge(work.query()), work.question, work.counters);
+    const auto toi = contact_question(as_contact_query(work.query()), work.question, work.counters);
     return toi ? Outcome::collides(toi) : Outcome::separate();
   }
 };
@@ -96,7 +97,7 @@ std::optional<TimeInterval> filtered_method(const Query& q, const Question& ques
       return contact_question(q, question, counters);
     } else {
       Work<Query> work{q, question, counters};
-      return run_stages(work, separation::SeparatingDirectionStage{}, ContactAsEdgeEdgeStage{});
+      return run_stages(work, separation::SeparatingDirectionStage{}, ContactOfEmbeddingStage{});
     }
   }
   Work<Query> work{q, question, counters};  // the minimum-separation question

@@ -256,7 +256,7 @@ void validate(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& po
 std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positions_t0,
                                                 const std::vector<Vec3>& positions_t1,
                                                 const CandidateSet& candidates, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
   scene::CollectCollisions<Vec3, std::size_t> question(tests, scene::resolve_threads(options.threads),
@@ -273,7 +273,7 @@ std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positio
 
 std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                                          const CandidateSet& candidates, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
   scene::EarliestCollision<Vec3> question(tests, scene::resolve_threads(options.threads), /*boxes_checked=*/true);
@@ -282,13 +282,13 @@ std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, 
 }
 
 std::optional<TimeInterval> earliest_toi(const std::vector<CandidateCollision>& collisions) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   return scene::earliest_of(collisions);
 }
 
 bool is_collision_free(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
                        const CandidateSet& candidates, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
   scene::AnyCollision<Vec3> question(tests, /*boxes_checked=*/true);

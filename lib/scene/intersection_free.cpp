@@ -7,7 +7,7 @@
 // well-kept, handle the coplanar cases directly, and with Exact_predicates_inexact_constructions
 // _kernel every do_intersect is a filtered predicate (interval arithmetic with an exact
 // fallback: Do_intersect_3 is among the kernel's filtered predicates), so the answer is exact
-// for double input and needs no construction. tests/test_scene.cpp cross-checks both ways.
+// for double input and needs no construction. tests/scene/test_scene.cpp cross-checks both ways.
 // CGAL's tests require non-degenerate triangles and segments (a precondition, unchecked in
 // release builds), so each triangle is first reduced exactly to its hull: a triangle, a
 // segment or a point.
@@ -18,7 +18,6 @@
 #include <variant>
 
 #include "exactccd/scene.hpp"
-#include "numeric/fp_environment.hpp"
 #include "scene/box_tree.hpp"
 #include "scene/broad_phase.hpp"
 #include "scene/parallel.hpp"
@@ -93,7 +92,7 @@ bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std
 // they are found: nothing is listed, and the first intersecting pair stops every thread.
 bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
                        unsigned threads) {
-  const numeric::DefaultFpEnvironment fp_environment;  // CGAL's static filters need it too
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   scene::require_finite_positions(positions, "positions");
   scene::require_valid_triangles(triangles, positions.size());
   threads = scene::resolve_threads(threads);

@@ -11,12 +11,53 @@
 #include <thread>
 #include <vector>
 
+#include "exactccd/scene.hpp"
 #include "numeric/fp_environment.hpp"
 
 namespace exactccd::scene {
 
-/// The most threads a scene function uses (SceneOptions::threads is capped there).
-constexpr unsigned kMaxThreads = 1024;
+/// The cancellation flag of the scene call running on this thread (SceneOptions::cancel), for
+/// parallel_chunks: a scene entry point installs its options' flag for the call's duration
+/// (RAII, restored on exit, also when it throws); parallel_chunks passes it on to its workers,
+/// which stop taking chunks once it is set, and then throws exactccd::Cancelled. Per thread and
+/// scoped, like the floating-point environment guard: no state outlives a call.
+class CancelScope {
+ public:
+  /// Installs `flag` (nullptr: not cancellable) on this thread until destruction.
+  explicit CancelScope(const std::atomic<bool>* flag) : previous_(current_) { current_ = flag; }
+  ~CancelScope() { current_ = previous_; }
+  CancelScope(const CancelScope&) = delete;
+  CancelScope& operator=(const CancelScope&) = delete;
+
+  /// The flag installed on this thread, or nullptr.
+  static const std::atomic<bool>* current() { return current_; }
+
+ private:
+  static inline thread_local const std::atomic<bool>* current_ = nullptr;
+  const std::atomic<bool>* previous_;
+};
+
+/// What every public scene function opens first, for its whole call (docs/design.md, 8): the
+/// floating-point environment the filters are proved in (numeric/fp_environment.hpp), installed
+/// before anything compares a double (validation included: DAZ would read -2^-1074 as -0), and
+/// the call's cancellation flag (SceneOptions::cancel; nullptr: not cancellable).
+class SceneCall {
+ public:
+  /// Installs both for this scope.
+  explicit SceneCall(const std::atomic<bool>* cancel = nullptr) : cancel_scope_(cancel) {}
+
+ private:
+  numeric::DefaultFpEnvironment fp_environment_;  // constructed first: members in this order
+  CancelScope cancel_scope_;
+};
+
+/// True when `flag` is set (nullptr: never).
+inline bool cancel_requested(const std::atomic<bool>* flag) {
+  return flag != nullptr && flag->load(std::memory_order_relaxed);
+}
+
+/// The most threads a scene function uses (validate(SceneOptions) refuses more).
+using exactccd::kMaxThreads;
 
 /// The number of threads to use for `requested` (0: every hardware thread), in 1..kMaxThreads.
 inline unsigned resolve_threads(unsigned requested) {
@@ -32,9 +73,11 @@ inline unsigned resolve_threads(unsigned requested) {
 /// early (chunks already started finish). The first exception thrown by body stops the loop
 /// and is rethrown here. When the system refuses a thread (std::system_error: a thread limit,
 /// no memory for its stack), the workers started do all the chunks: same results, fewer
-/// threads. Returns the number of workers that ran.
+/// threads. Returns the number of workers that ran. Under a CancelScope whose flag gets set,
+/// the workers stop between chunks and exactccd::Cancelled is thrown here.
 template <class Body>
 unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Body&& body) {
+  const std::atomic<bool>* cancel = CancelScope::current();
   chunk = std::max<std::size_t>(1, chunk);
   const std::size_t chunks = (n + chunk - 1) / chunk;
   const unsigned workers = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, chunks)));
@@ -46,8 +89,10 @@ unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Bod
     // A new thread inherits its creator's floating-point environment: establish the default
     // one in every worker (a no-op on the calling thread, whose entry point already did).
     const numeric::DefaultFpEnvironment fp_environment;
+    const CancelScope cancel_scope(cancel);  // nested loops of a worker see the same flag
     try {
-      for (std::size_t c; !stop.load(std::memory_order_relaxed) && (c = next.fetch_add(1)) < chunks;) {
+      for (std::size_t c; !stop.load(std::memory_order_relaxed) && !cancel_requested(cancel) &&
+                          (c = next.fetch_add(1)) < chunks;) {
         const std::size_t begin = c * chunk, end = std::min(n, begin + chunk);
         if (!body(begin, end, worker)) stop = true;
       }
@@ -69,6 +114,7 @@ unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Bod
   work(0);
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+  if (cancel_requested(cancel)) throw Cancelled();
   return static_cast<unsigned>(pool.size() + 1);
 }
 
@@ -78,6 +124,7 @@ unsigned parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Bod
 template <class Body>
 void parallel_ranges(std::size_t n, unsigned threads, std::size_t grain, Body&& body) {
   if (threads <= 1 || n < 4 * grain) {
+    if (cancel_requested(CancelScope::current())) throw Cancelled();
     body(std::size_t{0}, n);
     return;
   }

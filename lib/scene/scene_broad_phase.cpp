@@ -33,9 +33,10 @@ struct SceneBroadPhase::State {
 };
 
 SceneBroadPhase::SceneBroadPhase(const Scene& scene, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel, here only
   validate(options);
-  state_ = std::make_unique<State>(scene, options);
+  state_ = std::make_unique<State>(scene, options);  // validates the scene, builds the trees
+  state_->options.cancel = nullptr;                  // the flag need not outlive this call
 }
 
 SceneBroadPhase::~SceneBroadPhase() = default;
@@ -43,7 +44,7 @@ SceneBroadPhase::SceneBroadPhase(SceneBroadPhase&&) noexcept = default;
 SceneBroadPhase& SceneBroadPhase::operator=(SceneBroadPhase&&) noexcept = default;
 
 void SceneBroadPhase::update(const std::vector<Vec3>& positions_t1) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   if (positions_t1.size() != state_->scene.positions_t0.size())
     throw std::invalid_argument("exactccd SceneBroadPhase::update: positions_t1 has " +
                                 std::to_string(positions_t1.size()) + " vertices but positions_t0 has " +
@@ -55,17 +56,17 @@ void SceneBroadPhase::update(const std::vector<Vec3>& positions_t1) {
 }
 
 std::vector<Collision> SceneBroadPhase::find_collisions() const {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   return scene::find_collisions(state_->scene, state_->trees, state_->params, state_->threads);
 }
 
 std::optional<TimeInterval> SceneBroadPhase::earliest_toi() const {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   return scene::earliest_toi(state_->scene, state_->trees, state_->params, state_->threads);
 }
 
 bool SceneBroadPhase::is_collision_free() const {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   return !scene::any_collision(state_->scene, state_->trees, state_->params, state_->threads);
 }
 
@@ -78,7 +79,7 @@ const Scene& SceneBroadPhase::scene() const { return state_->scene; }
 const std::vector<std::array<int, 2>>& SceneBroadPhase::edges() const { return state_->trees.topology().edges; }
 
 const SceneCandidates& SceneBroadPhase::candidates() const {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   const std::lock_guard<std::mutex> lock(state_->candidates_mutex);
   if (!state_->candidates) state_->candidates = state_->trees.trees().candidates(state_->threads);
   return *state_->candidates;

@@ -23,7 +23,7 @@ CcdParams params_of(const SceneOptions& options) {
 
 template <class SceneT>
 std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
   const scene::SceneTrees trees(scene, params, threads);
@@ -32,7 +32,7 @@ std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOption
 
 template <class SceneT>
 std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
   const scene::SceneTrees trees(scene, params, threads);
@@ -41,7 +41,7 @@ std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOpti
 
 template <class SceneT>
 bool is_collision_free_in(const SceneT& scene, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
   const scene::SceneTrees trees(scene, params, threads);
@@ -59,7 +59,7 @@ std::vector<Collision> find_collisions(const Scene2d& scene, const SceneOptions&
 }
 
 std::optional<TimeInterval> earliest_toi(const std::vector<Collision>& collisions) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   return scene::earliest_of(collisions);
 }
 
@@ -80,7 +80,7 @@ bool is_collision_free(const Scene2d& scene, const SceneOptions& options) {
 }
 
 double max_collision_free_step(const std::optional<TimeInterval>& earliest, double tmax) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call;  // the FP environment (not cancellable)
   scene::require_valid_params(CcdParams{0.0, tmax});
   if (!earliest) return tmax;
   // Every collision time t >= lo; the largest double s < lo gives [0, s] without one (and

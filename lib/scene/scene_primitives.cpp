@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "api/number_text.hpp"
 #include "scene/candidate_finder.hpp"
 #include "scene/parallel.hpp"
 #include "scene/time_bounds.hpp"
@@ -69,15 +70,18 @@ void validate(const Scene2d& scene) {
 
 void validate(const SceneOptions& options) {
   scene::require_valid_params(CcdParams{options.min_distance, options.tmax});
+  if (options.threads > kMaxThreads)
+    fail("threads must be in 0.." + std::to_string(kMaxThreads) + " (0: every hardware thread), not " +
+         std::to_string(options.threads));
 }
 
 namespace scene {
 
 void require_valid_params(const CcdParams& params) {
   if (!(std::isfinite(params.min_distance) && params.min_distance >= 0))
-    fail("min_distance must be finite and >= 0, not " + std::to_string(params.min_distance));
+    fail("min_distance must be finite and >= 0, not " + shortest_text(params.min_distance));
   if (!(params.tmax > 0 && params.tmax <= 1))
-    fail("tmax must be in (0, 1], not " + std::to_string(params.tmax));
+    fail("tmax must be in (0, 1], not " + shortest_text(params.tmax));
 }
 
 void require_finite_positions(const std::vector<Vec3>& positions, const char* name) {

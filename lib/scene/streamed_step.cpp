@@ -144,7 +144,7 @@ bool any_collision(const Scene2d& s, const SceneTrees& t, const CcdParams& p, un
 }
 
 std::vector<Collision> find_collisions(const Scene& scene, const SceneOptions& options, StepStats* stats) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   validate(options);
   const CcdParams params{options.min_distance, options.tmax};
   const unsigned threads = resolve_threads(options.threads);

@@ -3,7 +3,7 @@
 // integers where that is not decisive, and a long-double guess of f's root. Used by the
 // separation walk's narrowing of a TOI (separation_walk.cpp): at the doubles next to a root of
 // f, intervals in doubles cannot give f's sign; double-double almost always can
-// (tests/test_distance_sign.cpp counts it), without GMP.
+// (tests/separation/test_distance_sign.cpp counts it), without GMP.
 #pragma once
 
 #include <gmpxx.h>

@@ -29,9 +29,15 @@ of shape (n, 3); candidate rows of vertex indices, or of face / edge indices wit
     candidates_is_collision_free(...) -> bool
     candidates_max_collision_free_step(...) -> float
 
+A scene's broad phase kept across the calls of a line search (build once, refit per trial)::
+
+    bp = SceneBroadPhase(V0, V1, F, E=None, P=None, min_distance=0.0, tmax=1.0, threads=0)
+    bp.update(V1_trial); bp.max_collision_free_step()   # also find_collisions(), earliest_toi(),
+                                                       # is_collision_free(), candidates, edges
+
 Rigid bodies (each moving from pose (c0, q0) to (c1, q1); quaternions w x y z of any length)::
 
-    rigid_vertex_face_ccd(q, min_distance=0.0, tmax=1.0, threads=0)  # q: (N, 40) -> (N,) bool
+    rigid_vertex_face_ccd(q, min_distance=0.0, tmax=1.0, threads=0)  # q: (N, 40) float64 -> (N,) bool
     rigid_vertex_face_toi(q, ...)                                     # -> (N, 2) [lo, hi]
     rigid_edge_edge_ccd / rigid_edge_edge_toi                         # (N, 40)
     rigid_find_collisions(bodies, min_distance=0.0, tmax=1.0, threads=0) -> dict
@@ -40,12 +46,18 @@ Rigid bodies (each moving from pose (c0, q0) to (c1, q1); quaternions w x y z of
     # bodies: a sequence of (V, F, c0, q0, c1, q1)
 
 Every answer is exact; a time of impact is the tightest double interval [lo, hi] holding the exact
-time. Bad input (shape, dtype, NaN or infinite coordinates, bad min_distance or tmax) raises
-ValueError with the library's message.
+time. Coordinates are float64 arrays, or float32/float16 (widened exactly), or integer arrays whose
+every value is a double. threads is in 0..1024 (0: every hardware thread). Bad input (shape,
+dtype, an integer that is not a double, NaN or infinite coordinates, bad min_distance, tmax or
+threads) raises ValueError with the library's message. Long calls can be interrupted with Ctrl-C
+(KeyboardInterrupt; the worker threads stop).
 """
 
+from . import _exactccd
 from ._exactccd import (  # noqa: F401
     EDGE_EDGE,
+    SceneBroadPhase,
+    __version__,
     KIND_NAMES,
     POINT_EDGE,
     POINT_POINT,
@@ -55,22 +67,10 @@ from ._exactccd import (  # noqa: F401
     candidates_is_collision_free,
     candidates_max_collision_free_step,
     earliest_toi,
-    edge_edge_2d_ccd,
-    edge_edge_2d_toi,
-    edge_edge_ccd,
-    edge_edge_toi,
     find_collisions,
     intersection_free,
     is_collision_free,
     max_collision_free_step,
-    point_edge_2d_ccd,
-    point_edge_2d_toi,
-    point_edge_ccd,
-    point_edge_toi,
-    point_point_2d_ccd,
-    point_point_2d_toi,
-    point_point_ccd,
-    point_point_toi,
     read_mesh,
     rigid_earliest_toi,
     rigid_edge_edge_ccd,
@@ -79,26 +79,18 @@ from ._exactccd import (  # noqa: F401
     rigid_max_collision_free_step,
     rigid_vertex_face_ccd,
     rigid_vertex_face_toi,
-    vertex_face_ccd,
-    vertex_face_toi,
 )
 
-__version__ = "@PROJECT_VERSION@"
-
-#: The batch functions' kinds: name -> (rows per query: every point at t = 0, then at t = 1; coordinates per row).
-KINDS = {
-    "vertex_face": (8, 3),
-    "edge_edge": (8, 3),
-    "point_edge": (6, 3),
-    "point_point": (4, 3),
-    "edge_edge_2d": (8, 2),
-    "point_edge_2d": (6, 2),
-    "point_point_2d": (4, 2),
-}
+#: The batch functions' kinds (the library's one list of kinds): function stem -> (rows per
+#: query: every point at t = 0, then at t = 1; coordinates per row). Each has <stem>_ccd and
+#: <stem>_toi, imported here from the extension (their stubs: __init__.pyi).
+KINDS = dict(_exactccd.KINDS)
+globals().update({f"{k}_{f}": getattr(_exactccd, f"{k}_{f}") for k in KINDS for f in ("ccd", "toi")})
 
 __all__ = [
-    "EDGE_EDGE", "KIND_NAMES", "KINDS", "POINT_EDGE", "POINT_POINT", "VERTEX_FACE",
+    "EDGE_EDGE", "KIND_NAMES", "KINDS", "POINT_EDGE", "POINT_POINT", "SceneBroadPhase", "VERTEX_FACE",
     "candidates_earliest_toi", "candidates_find_collisions", "candidates_is_collision_free",
     "candidates_max_collision_free_step", "earliest_toi", "find_collisions", "intersection_free", "is_collision_free",
-    "max_collision_free_step", "read_mesh",
+    "max_collision_free_step", "read_mesh", "rigid_earliest_toi", "rigid_edge_edge_ccd", "rigid_edge_edge_toi",
+    "rigid_find_collisions", "rigid_max_collision_free_step", "rigid_vertex_face_ccd", "rigid_vertex_face_toi",
 ] + [f"{k}_{f}" for k in KINDS for f in ("ccd", "toi")]

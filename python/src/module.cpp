@@ -18,19 +18,24 @@
 #include <deque>
 #include <filesystem>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <optional>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "exactccd/candidates.hpp"
 #include "exactccd/ccd.hpp"
+#include "exactccd/exactccd.h"
 #include "exactccd/scene.hpp"
 #include "exactccd/types.hpp"
 #include "io/input_file.hpp"
 #include "io/mesh_file.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "scene/parallel.hpp"
+#include "interruptible.hpp"
 
 namespace py = pybind11;
 
@@ -76,17 +81,65 @@ py::array as_array(const py::handle& obj, const std::string& name) {
   return a;
 }
 
+/// The index of the `flat`-th element of `a` (C order) as text, e.g. "[3, 1]".
+std::string index_text(const py::array& a, py::ssize_t flat) {
+  std::vector<py::ssize_t> index(static_cast<std::size_t>(a.ndim()));
+  for (py::ssize_t k = a.ndim() - 1; k >= 0; --k) {
+    index[static_cast<std::size_t>(k)] = flat % a.shape(k);
+    flat /= a.shape(k);
+  }
+  std::string s = "[";
+  for (std::size_t k = 0; k < index.size(); ++k) s += (k ? ", " : "") + std::to_string(index[k]);
+  return s + "]";
+}
+
+/// Throws ValueError naming the first element of the integer array `a` (element type T) that
+/// is not exactly a double. static_cast<double> rounds v to a double; v is one iff that double
+/// converts back to v, tested only inside T's range (a double of magnitude 2^63, or 2^64
+/// unsigned, is outside it: converting it back would be undefined; only -2^63 is exact there).
+template <class T>
+void require_exact_doubles(const py::array& a, const std::string& name) {
+  if constexpr (sizeof(T) <= 4) return;  // every 32-bit integer is a double
+  const auto c = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+  for (py::ssize_t i = 0; i < c.size(); ++i) {
+    const T v = c.data()[i];
+    const double d = static_cast<double>(v);
+    const bool exact = std::is_signed_v<T> ? (d == -0x1p63 || (d > -0x1p63 && d < 0x1p63 && static_cast<T>(d) == v))
+                                           : (d < 0x1p64 && static_cast<T>(d) == v);
+    if (!exact)
+      throw py::value_error(name + index_text(a, i) + " = " + std::to_string(v) +
+                            " is not exactly a double: an integer array is taken only when every value is "
+                            "one (convert it yourself, e.g. numpy.asarray(" + name +
+                            ", dtype=numpy.float64), to choose the rounding)");
+  }
+}
+
+/// Throws ValueError unless every value of `a` is exactly a double: floating-point arrays of at
+/// most 64 bits (float16, float32 and float64 widen exactly); integer arrays whose every value
+/// is a double (any of 32 bits or fewer; 64-bit ones checked value by value).
+void require_exact_dtype(const py::array& a, const std::string& name) {
+  const char kind = a.dtype().kind();
+  if (kind == 'f' && a.itemsize() <= 8) return;
+  if (kind == 'i' || kind == 'u') {
+    if (a.itemsize() <= 4) return;
+    if (kind == 'i') require_exact_doubles<std::int64_t>(a, name);
+    else require_exact_doubles<std::uint64_t>(a, name);
+    return;
+  }
+  throw py::value_error(name + " must be an array of float64 (or float32, float16, or integers that are exact "
+                        "doubles), not " + dtype_string(a));
+}
+
 /// `obj` as a C-contiguous float64 array of `ndim` dimensions whose trailing dimensions are
-/// `tail` (-1: any). Only float64 is accepted: coordinates are taken exactly, never converted.
+/// `tail` (-1: any). Coordinates are taken exactly, never rounded: float64 as it is, float32
+/// and float16 widened (exact), integers when each is a double (require_exact_dtype).
 DoubleArray float_array(const py::handle& obj, const std::string& name, std::vector<py::ssize_t> shape,
                         const std::string& expected) {
   py::array a = as_array(obj, name);
-  if (a.dtype().kind() != 'f' || a.itemsize() != 8)
-    throw py::value_error(name + " must be a float64 array, not " + dtype_string(a) +
-                          " (convert with numpy.asarray(" + name + ", dtype=numpy.float64))");
   bool ok = a.ndim() == static_cast<py::ssize_t>(shape.size());
   for (std::size_t i = 0; ok && i < shape.size(); ++i) ok = shape[i] < 0 || a.shape(i) == shape[i];
   if (!ok) throw py::value_error(name + " must have shape " + expected + ", not " + shape_string(a));
+  require_exact_dtype(a, name);
   return DoubleArray::ensure(a);
 }
 
@@ -131,10 +184,17 @@ std::vector<int> to_ints(const IndexArray& a, const std::string& name) {
   return out;
 }
 
-unsigned to_threads(long long threads) {
-  if (threads < 0) throw py::value_error("threads must be >= 0 (0: every hardware thread), not " + std::to_string(threads));
-  return scene::resolve_threads(static_cast<unsigned>(std::min<long long>(threads, scene::kMaxThreads)));
+/// The threads argument, in the library's one range 0..kMaxThreads (SceneOptions::threads; the
+/// command line's --threads takes 1..1024): anything else is a ValueError, never capped.
+unsigned checked_threads(long long threads) {
+  if (threads < 0 || threads > static_cast<long long>(kMaxThreads))
+    throw py::value_error("threads must be in 0.." + std::to_string(kMaxThreads) +
+                          " (0: every hardware thread), not " + std::to_string(threads));
+  return static_cast<unsigned>(threads);
 }
+
+/// The number of worker threads for `threads` (0: every hardware thread).
+unsigned to_threads(long long threads) { return scene::resolve_threads(checked_threads(threads)); }
 
 /// Keeps the names and docstrings of the generated functions alive for the interpreter's life.
 const char* keep(std::string s) {
@@ -148,6 +208,11 @@ const char* keep(std::string s) {
 /// Queries per chunk of the thread pool: small enough to balance queries of very different
 /// cost (an exact fallback costs 100x a filtered answer), large enough to amortise the hand-out.
 constexpr std::size_t kChunk = 64;
+
+/// Batches of at most this many queries run on the calling thread (a few milliseconds at most
+/// for filtered answers), larger ones interruptibly (interruptible.hpp: a helper thread, about
+/// 50 us to start).
+constexpr std::size_t kInterruptibleBatch = 4096;
 
 template <class Kind>
 struct Batch {
@@ -200,6 +265,26 @@ struct Batch {
     return a;
   }
 
+  /// body(begin, end) over chunks of [0, n) on `workers` threads, the GIL released; a batch
+  /// of more than kInterruptibleBatch queries runs interruptibly (Ctrl-C).
+  template <class Body>
+  static void run(std::size_t n, unsigned workers, Body&& body) {
+    const auto loop = [&](const std::atomic<bool>* cancel) {
+      const scene::CancelScope cancel_scope(cancel);  // parallel_chunks stops when it is set
+      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
+        body(begin, end);
+        return true;
+      });
+      return true;
+    };
+    if (n > kInterruptibleBatch) {
+      interruptible(loop);
+    } else {
+      py::gil_scoped_release release;
+      loop(nullptr);
+    }
+  }
+
   static py::array_t<bool> ccd(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params, false);
@@ -208,13 +293,9 @@ struct Batch {
     py::array_t<bool> out(static_cast<py::ssize_t>(n));
     bool* o = out.mutable_data();
     const double* in = a.data();
-    {
-      py::gil_scoped_release release;
-      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-        for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(query(in + i * stride), params);
-        return true;
-      });
-    }
+    run(n, workers, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(query(in + i * stride), params);
+    });
     return out;
   }
 
@@ -226,17 +307,13 @@ struct Batch {
     auto out = shaped<py::array_t<double>>({static_cast<py::ssize_t>(n), 2});
     double* o = out.mutable_data();
     const double* in = a.data();
-    {
-      py::gil_scoped_release release;
-      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-        for (std::size_t i = begin; i < end; ++i) {
-          const std::optional<TimeInterval> t = exactccd::toi(query(in + i * stride), params);
-          o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
-          o[2 * i + 1] = t ? t->hi : std::numeric_limits<double>::quiet_NaN();
-        }
-        return true;
-      });
-    }
+    run(n, workers, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::optional<TimeInterval> t = exactccd::toi(query(in + i * stride), params);
+        o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
+        o[2 * i + 1] = t ? t->hi : std::numeric_limits<double>::quiet_NaN();
+      }
+    });
     return out;
   }
 
@@ -320,6 +397,16 @@ SceneOptions make_options(double min_distance, double tmax, long long threads) {
   return o;
 }
 
+/// f(options with the call's cancellation flag), interruptible (interruptible.hpp).
+template <class F>
+auto with_cancel(const SceneOptions& options, F&& f) {
+  return interruptible([&](const std::atomic<bool>* cancel) {
+    SceneOptions o = options;
+    o.cancel = cancel;
+    return f(o);
+  });
+}
+
 py::dict collisions_dict(const std::vector<Collision>& cs) {
   const auto k = static_cast<py::ssize_t>(cs.size());
   py::array_t<std::int8_t> kind(k);
@@ -354,12 +441,9 @@ py::dict find_collisions_py(const py::handle& v0, const py::handle& v1, const py
                             const py::handle& p, double min_distance, double tmax, long long threads) {
   const SceneInput s = make_scene(v0, v1, f, e, p);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  std::vector<Collision> cs;
-  {
-    py::gil_scoped_release release;
-    cs = s.planar ? find_collisions(s.s2, o) : find_collisions(s.s3, o);
-  }
-  return collisions_dict(cs);
+  return collisions_dict(with_cancel(o, [&](const SceneOptions& oc) {
+    return s.planar ? find_collisions(s.s2, oc) : find_collisions(s.s3, oc);
+  }));
 }
 
 std::optional<std::pair<double, double>> earliest_toi_py(const py::handle& v0, const py::handle& v1,
@@ -368,11 +452,9 @@ std::optional<std::pair<double, double>> earliest_toi_py(const py::handle& v0, c
                                                          long long threads) {
   const SceneInput s = make_scene(v0, v1, f, e, p);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  std::optional<TimeInterval> t;
-  {
-    py::gil_scoped_release release;
-    t = s.planar ? earliest_toi(s.s2, o) : earliest_toi(s.s3, o);
-  }
+  const std::optional<TimeInterval> t = with_cancel(o, [&](const SceneOptions& oc) {
+    return s.planar ? earliest_toi(s.s2, oc) : earliest_toi(s.s3, oc);
+  });
   if (!t) return std::nullopt;
   return std::make_pair(t->lo, t->hi);
 }
@@ -381,8 +463,9 @@ bool is_collision_free_py(const py::handle& v0, const py::handle& v1, const py::
                           const py::handle& p, double min_distance, double tmax, long long threads) {
   const SceneInput s = make_scene(v0, v1, f, e, p);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  py::gil_scoped_release release;
-  return s.planar ? is_collision_free(s.s2, o) : is_collision_free(s.s3, o);
+  return with_cancel(o, [&](const SceneOptions& oc) {
+    return s.planar ? is_collision_free(s.s2, oc) : is_collision_free(s.s3, oc);
+  });
 }
 
 double max_collision_free_step_py(const py::handle& v0, const py::handle& v1, const py::handle& f,
@@ -390,8 +473,9 @@ double max_collision_free_step_py(const py::handle& v0, const py::handle& v1, co
                                   long long threads) {
   const SceneInput s = make_scene(v0, v1, f, e, p);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  py::gil_scoped_release release;
-  return s.planar ? max_collision_free_step(s.s2, o) : max_collision_free_step(s.s3, o);
+  return with_cancel(o, [&](const SceneOptions& oc) {
+    return s.planar ? max_collision_free_step(s.s2, oc) : max_collision_free_step(s.s3, oc);
+  });
 }
 
 bool intersection_free_py(const py::handle& v_obj, const py::handle& f_obj) {
@@ -484,11 +568,8 @@ py::dict candidates_find_collisions_py(const py::handle& v0, const py::handle& v
                                        long long threads) {
   const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  std::vector<CandidateCollision> cs;
-  {
-    py::gil_scoped_release release;
-    cs = find_collisions(in.x0, in.x1, in.set, o);
-  }
+  const std::vector<CandidateCollision> cs =
+      with_cancel(o, [&](const SceneOptions& oc) { return find_collisions(in.x0, in.x1, in.set, oc); });
   const auto k = static_cast<py::ssize_t>(cs.size());
   py::array_t<std::int8_t> kind(k);
   IndexArray index(k);
@@ -512,11 +593,8 @@ std::optional<std::pair<double, double>> candidates_earliest_toi_py(
     long long threads) {
   const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  std::optional<TimeInterval> t;
-  {
-    py::gil_scoped_release release;
-    t = earliest_toi(in.x0, in.x1, in.set, o);
-  }
+  const std::optional<TimeInterval> t =
+      with_cancel(o, [&](const SceneOptions& oc) { return earliest_toi(in.x0, in.x1, in.set, oc); });
   if (!t) return std::nullopt;
   return std::make_pair(t->lo, t->hi);
 }
@@ -527,8 +605,7 @@ bool candidates_is_collision_free_py(const py::handle& v0, const py::handle& v1,
                                      long long threads) {
   const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  py::gil_scoped_release release;
-  return is_collision_free(in.x0, in.x1, in.set, o);
+  return with_cancel(o, [&](const SceneOptions& oc) { return is_collision_free(in.x0, in.x1, in.set, oc); });
 }
 
 double candidates_max_collision_free_step_py(const py::handle& v0, const py::handle& v1, const py::handle& vf,
@@ -537,9 +614,157 @@ double candidates_max_collision_free_step_py(const py::handle& v0, const py::han
                                              double tmax, long long threads) {
   const CandidateInput in = make_candidates(v0, v1, vf, ee, pe, pp, f, e);
   const SceneOptions o = make_options(min_distance, tmax, threads);
-  py::gil_scoped_release release;
-  return max_collision_free_step(in.x0, in.x1, in.set, o);
+  return with_cancel(o, [&](const SceneOptions& oc) { return max_collision_free_step(in.x0, in.x1, in.set, oc); });
 }
+
+// --- the scene's broad phase kept across calls (exactccd::SceneBroadPhase) --------------------
+
+/// exactccd.SceneBroadPhase: a thin wrapper over exactccd::SceneBroadPhase (built once, refitted
+/// by update()), with the narrow phase over its candidates (exactccd/candidates.hpp), whose
+/// answers equal the scene functions' on the current scene. Calls are serialised by a mutex
+/// (the GIL is released during the work, and update() must not run concurrently with reads).
+class PyBroadPhase {
+ public:
+  PyBroadPhase(const py::handle& v0, const py::handle& v1, const py::handle& f, const py::handle& e,
+               const py::handle& p, double min_distance, double tmax, long long threads)
+      : options_(make_options(min_distance, tmax, threads)) {
+    const SceneInput s = make_scene(v0, v1, f, e, p);
+    if (s.planar) throw py::value_error("SceneBroadPhase takes a 3D scene: V0 of shape (n, 3)");
+    broad_ = with_cancel(options_, [&](const SceneOptions& oc) { return std::make_unique<SceneBroadPhase>(s.s3, oc); });
+    refresh_candidates();
+  }
+
+  void update(const py::handle& v1_obj) {
+    const DoubleArray v1 = float_array(v1_obj, "V1", {-1, 3}, "(n, 3)");
+    const std::vector<Vec3> positions = to_positions(v1);
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);  // without the GIL: see lock()
+    broad_->update(positions);  // std::invalid_argument (size, non-finite) leaves it unchanged
+    refresh_candidates();
+  }
+
+  py::dict candidates() {
+    const auto held = lock();
+    const SceneCandidates& c = broad_->candidates();
+    py::dict d;
+    d["vertex_face"] = pairs_array(c.vertex_face);
+    d["edge_edge"] = pairs_array(c.edge_edge);
+    d["point_edge"] = pairs_array(c.point_edge);
+    d["point_point"] = pairs_array(c.point_point);
+    return d;
+  }
+
+  IndexArray edges() {
+    const auto held = lock();
+    return pairs_array(broad_->edges());
+  }
+
+  py::dict find_collisions_now() {
+    const auto held = lock();
+    const Scene& s = broad_->scene();
+    const std::vector<CandidateCollision> cs = with_cancel(options_, [&](const SceneOptions& oc) {
+      return find_collisions(s.positions_t0, s.positions_t1, set_, oc);
+    });
+    std::vector<Collision> out;
+    out.reserve(cs.size());
+    for (const CandidateCollision& c : cs) out.push_back(as_scene_collision(c));
+    return collisions_dict(out);
+  }
+
+  std::optional<std::pair<double, double>> earliest_toi_now() {
+    const auto held = lock();
+    const Scene& s = broad_->scene();
+    const std::optional<TimeInterval> t = with_cancel(options_, [&](const SceneOptions& oc) {
+      return earliest_toi(s.positions_t0, s.positions_t1, set_, oc);
+    });
+    if (!t) return std::nullopt;
+    return std::make_pair(t->lo, t->hi);
+  }
+
+  bool is_collision_free_now() {
+    const auto held = lock();
+    const Scene& s = broad_->scene();
+    return with_cancel(options_, [&](const SceneOptions& oc) {
+      return is_collision_free(s.positions_t0, s.positions_t1, set_, oc);
+    });
+  }
+
+  double max_collision_free_step_now() {
+    const auto held = lock();
+    const Scene& s = broad_->scene();
+    return with_cancel(options_, [&](const SceneOptions& oc) {
+      return max_collision_free_step(s.positions_t0, s.positions_t1, set_, oc);
+    });
+  }
+
+  double min_distance() const { return options_.min_distance; }
+  double tmax() const { return options_.tmax; }
+
+ private:
+  /// The object's mutex, taken with the GIL released (then the GIL again): a thread waiting
+  /// for the mutex must not hold the GIL, which the holder's signal polling takes.
+  std::unique_lock<std::mutex> lock() {
+    py::gil_scoped_release release;
+    return std::unique_lock<std::mutex>(mutex_);
+  }
+
+  template <std::size_t W>
+  static IndexArray pairs_array(const std::vector<std::array<int, W>>& rows) {
+    auto a = shaped<IndexArray>({static_cast<py::ssize_t>(rows.size()), static_cast<py::ssize_t>(W)});
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      for (std::size_t k = 0; k < W; ++k) a.mutable_data()[W * i + k] = rows[i][k];
+    return a;
+  }
+
+  /// The candidates by vertex index (CandidateSet), for the narrow phase of candidates.hpp.
+  void refresh_candidates() {
+    const SceneCandidates& c = broad_->candidates();
+    const auto& tri = broad_->scene().triangles;
+    const auto& edges = broad_->edges();
+    const auto at = [](int i) { return static_cast<std::size_t>(i); };
+    set_ = CandidateSet{};
+    for (const auto& [v, t] : c.vertex_face)
+      set_.vertex_face.push_back({v, tri[at(t)][0], tri[at(t)][1], tri[at(t)][2]});
+    for (const auto& [i, j] : c.edge_edge)
+      set_.edge_edge.push_back({edges[at(i)][0], edges[at(i)][1], edges[at(j)][0], edges[at(j)][1]});
+    for (const auto& [p, e] : c.point_edge) set_.point_edge.push_back({p, edges[at(e)][0], edges[at(e)][1]});
+    set_.point_point = c.point_point;
+  }
+
+  /// A colliding candidate as the scene functions report it (Collision).
+  Collision as_scene_collision(const CandidateCollision& c) const {
+    const SceneCandidates& cands = broad_->candidates();
+    const auto& edges = broad_->edges();
+    const auto at = [](int i) { return static_cast<std::size_t>(i); };
+    Collision out;
+    out.kind = c.kind;
+    out.toi = c.toi;
+    switch (c.kind) {
+      case CollisionKind::vertex_face:
+        out.vertex = cands.vertex_face[c.index][0];
+        out.triangle = cands.vertex_face[c.index][1];
+        break;
+      case CollisionKind::edge_edge:
+        out.edge_a = edges[at(cands.edge_edge[c.index][0])];
+        out.edge_b = edges[at(cands.edge_edge[c.index][1])];
+        break;
+      case CollisionKind::point_edge:
+        out.vertex = cands.point_edge[c.index][0];
+        out.edge_a = edges[at(cands.point_edge[c.index][1])];
+        break;
+      case CollisionKind::point_point:
+        out.vertex = cands.point_point[c.index][0];
+        out.vertex_b = cands.point_point[c.index][1];
+        break;
+    }
+    return out;
+  }
+
+  SceneOptions options_;
+  std::unique_ptr<SceneBroadPhase> broad_;
+  CandidateSet set_;
+  std::mutex mutex_;
+};
 
 constexpr const char* kCandidateArgs =
     "V0, V1: float64 arrays of shape (n, 3), the vertex positions at t = 0 and t = 1.\n"
@@ -575,6 +800,7 @@ PYBIND11_MODULE(_exactccd, m) {
   using namespace exactccd::python;
   m.doc() = "Exact continuous collision detection (the C++ library exactccd): NumPy batch functions per "
             "primitive kind, scene functions on arrays, and the mesh reader.";
+  m.attr("__version__") = exactccd_version();  // the library's: one version (CMake's project version)
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -583,7 +809,15 @@ PYBIND11_MODULE(_exactccd, m) {
     }
   });
 
-  kinds::for_each_kind([&](auto kind) { Batch<decltype(kind)>::define(m); });
+  // The batch functions of every kind of the one list, and KINDS: function stem -> (rows per
+  // query, coordinates per row), from which the package imports them (exactccd/__init__.py).
+  py::dict batch_kinds;
+  kinds::for_each_kind([&](auto kind) {
+    using Kind = decltype(kind);
+    Batch<Kind>::define(m);
+    batch_kinds[py::str(std::string(Kind::function))] = py::make_tuple(2 * Kind::points, Kind::dimension);
+  });
+  m.attr("KINDS") = batch_kinds;
   define_rigid(m);
 
   m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);
@@ -651,6 +885,42 @@ PYBIND11_MODULE(_exactccd, m) {
                      "The largest step s <= tmax keeping every candidate at distance > min_distance: tmax when "
                      "none collides, else the largest double strictly below the earliest TOI's lo (0 for a "
                      "collision at t = 0).");
+  py::class_<PyBroadPhase>(m, "SceneBroadPhase",
+                           "A scene's broad phase kept across calls (the C++ exactccd::SceneBroadPhase): bounding "
+                           "volume hierarchies over the triangles, edges and isolated points, built once and refitted "
+                           "by update(V1) when only the positions at t = 1 change, as in a line search trying several "
+                           "steps from the same V0. The candidates are always those a new SceneBroadPhase of the "
+                           "current scene would give; the narrow-phase methods answer exactly as the scene functions "
+                           "(find_collisions, earliest_toi, is_collision_free, max_collision_free_step) on the "
+                           "current scene with the same min_distance and tmax, without rebuilding anything. 3D "
+                           "scenes only. Long calls can be interrupted (Ctrl-C).")
+      .def(py::init<const py::handle&, const py::handle&, const py::handle&, const py::handle&, const py::handle&,
+                    double, double, long long>(),
+           py::arg("V0"), py::arg("V1"), py::arg("F") = py::none(), py::arg("E") = py::none(),
+           py::arg("P") = py::none(), py::arg("min_distance") = 0.0, py::arg("tmax") = 1.0, py::arg("threads") = 0,
+           keep("Builds the broad phase of the scene for the question (min_distance, tmax).\n\n" + args))
+      .def("update", &PyBroadPhase::update, py::arg("V1"),
+           "Replaces the positions at t = 1 (V1: float64 array (n, 3), the same n), refits the hierarchies and "
+           "recomputes the candidates. Raises ValueError (leaving the object unchanged) for a wrong shape or a "
+           "NaN or infinite coordinate.")
+      .def_property_readonly("candidates", &PyBroadPhase::candidates,
+                             "The current candidates as a dict of int64 arrays of shape (m, 2), each sorted: "
+                             "vertex_face {vertex, triangle}, edge_edge {edge i, edge j} (i < j, rows of edges), "
+                             "point_edge {point, edge} and point_point {p, q} (only for min_distance > 0).")
+      .def_property_readonly("edges", &PyBroadPhase::edges,
+                             "The scene's edges, an int64 array (e, 2): the triangles' unique edges and the extra "
+                             "edges, each ascending, sorted (what the candidates' edge indices refer to).")
+      .def_property_readonly("min_distance", &PyBroadPhase::min_distance, "The question's minimum separation.")
+      .def_property_readonly("tmax", &PyBroadPhase::tmax, "The question's time limit.")
+      .def("find_collisions", &PyBroadPhase::find_collisions_now,
+           "Every colliding pair of the current scene, as exactccd.find_collisions returns them (the same dict).")
+      .def("earliest_toi", &PyBroadPhase::earliest_toi_now,
+           "The current scene's earliest time of impact (lo, hi), or None, as exactccd.earliest_toi.")
+      .def("is_collision_free", &PyBroadPhase::is_collision_free_now,
+           "True iff no pair of the current scene collides, as exactccd.is_collision_free.")
+      .def("max_collision_free_step", &PyBroadPhase::max_collision_free_step_now,
+           "The largest collision-free step of the current scene, as exactccd.max_collision_free_step.");
+
   m.def("intersection_free", &intersection_free_py, py::arg("V"), py::arg("F"),
         "Exact static self-intersection check of a triangle mesh: True iff triangles sharing no vertex index "
         "are disjoint and triangles sharing one vertex meet only there (see exactccd/scene.hpp).\n\n"
@@ -660,6 +930,6 @@ PYBIND11_MODULE(_exactccd, m) {
         "The triangle mesh in the file at path, as (V, F): V a float64 array (n, 3) of positions (read "
         "exactly), F an int64 array (m, 3) of 0-based triangles (polygons fan-triangulated). The format "
         "comes from the extension and the content, which must agree (the formats the library reads; see "
-        "the README). Raises FileNotFoundError for a missing file and ValueError with the library's "
+        "docs/formats.md). Raises FileNotFoundError for a missing file and ValueError with the library's "
         "message (\"<path>:<line>: <reason>\") for an unreadable, unsupported or malformed file.");
 }

@@ -69,3 +69,49 @@ def test_stub_parameters_and_defaults_match_the_extension():
     for name, function in _runtime_functions().items():
         assert stubs[name] == _runtime_signature(name, function), name
 
+
+
+def _stub_classes():
+    """{class name: {method or property name: parameters (None for a property)}} of the stubs."""
+    path = os.path.join(os.path.dirname(exactccd.__file__), "__init__.pyi")
+    with open(path, encoding="utf-8") as f:
+        tree = ast.parse(f.read(), path)
+    out = {}
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef) or node.name.startswith("_"):
+            continue
+        members = {}
+        for item in node.body:
+            if not isinstance(item, ast.FunctionDef) or (item.name.startswith("_") and item.name != "__init__"):
+                continue
+            if any(isinstance(d, ast.Name) and d.id == "property" for d in item.decorator_list):
+                members[item.name] = None
+                continue
+            args = item.args.posonlyargs + item.args.args
+            defaults = [None] * (len(args) - len(item.args.defaults)) + [ast.literal_eval(d) for d in item.args.defaults]
+            has_default = [False] * (len(args) - len(item.args.defaults)) + [True] * len(item.args.defaults)
+            members[item.name] = [(a.arg, h, d) for a, h, d in zip(args, has_default, defaults)]
+        out[node.name] = members
+    return out
+
+
+def _runtime_classes():
+    return {n: getattr(exactccd, n) for n in dir(exactccd) if not n.startswith("_") and isinstance(getattr(exactccd, n), type)}
+
+
+def test_stub_declares_exactly_the_public_classes_and_their_members():
+    stubs, runtime = _stub_classes(), _runtime_classes()
+    assert sorted(stubs) == sorted(runtime)
+    for name, cls in runtime.items():
+        public = sorted(m for m in dir(cls) if not m.startswith("_")) + ["__init__"]
+        assert sorted(stubs[name]) == sorted(public), name
+
+
+def test_stub_methods_match_the_extension():
+    for name, cls in _runtime_classes().items():
+        for member, params in _stub_classes()[name].items():
+            attribute = getattr(cls, member)
+            if params is None:  # a property in the stub: a property at run time too
+                assert isinstance(attribute, property), f"{name}.{member}"
+                continue
+            assert _runtime_signature(member, attribute) == params, f"{name}.{member}"

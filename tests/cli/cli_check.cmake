@@ -268,7 +268,7 @@ elseif(CASE STREQUAL "help")
   endif()
 
 elseif(CASE STREQUAL "check_small_stack")
-  # Queries whose roots are ~2^-2073 apart (tests/test_bounded_stack.cpp derives answer 1 and
+  # Queries whose roots are ~2^-2073 apart (tests/exact/test_bounded_stack.cpp derives answer 1 and
   # TOI [0, 2^-1074]): answered by both exact methods with the process stack limited to 256 KB (a quarter of the
   # 1 MB thread stack the contract is stated for; either recursion on the caller's stack crashes here).
   foreach(kind vertex-face edge-edge)

@@ -1,4 +1,4 @@
-# CLI contract tests of unreadable input, bounded resources and command-line numbers (README,
+# CLI contract tests of unreadable input, bounded resources and command-line numbers (docs/formats.md,
 # "Input files"), one CTest test per case (CMakeLists.txt):
 #   cmake -DEXE=<exactccd> -DDATA=<tests/data> -DPLUGIN=<naive_plugin.so> -DWORK=<scratch dir>
 #         -DCASE=<case> -P cli_input.cmake
@@ -48,16 +48,16 @@ if(CASE STREQUAL "option_values")
   # Each case: subcommand|option|values (comma-separated)|other arguments ('^'-separated).
   set(plugin_args "${PLUGIN}^--kind^vf^--out^${WORK}/fuzz")
   set(cases
-    "check|--threads|abc,-1,2x,1e9,0,100000,1025,4294967297|${small}"
+    "check|--threads|abc,-1,2x,1e9,100000,1025,4294967297|${small}"
     "check|--shard|3/2,2/2,-1/2,1/2x,1,abc,0/0|${small}"
     "bench|--repetitions|abc,-1,0,2x,1e9,100001|${small}"
-    "stability|--threads|abc,-1,2x,1e9,0,100000|--instances^1"
+    "stability|--threads|abc,-1,2x,1e9,100000|--instances^1"
     "stability|--shard|3/2,0/0,x/2|--instances^1"
     "stability|--instances|-3,0,abc,1e9,2x|"
     "stability|--k-min|-1,abc,1.5,1075|"
     "stability|--k-max|-1,abc,2x|"
     "stability|--seed|-1,abc,1e9,18446744073709551616|"
-    "scene|--threads|abc,-1,2x,1e9,0,100000|a.obj^b.obj"
+    "scene|--threads|abc,-1,2x,1e9,100000|a.obj^b.obj"
     "generate|--resolution|abc,1,-24,1e9,24x,1001|catalogue^--out^${WORK}/gen"
     "generate|--seed|-1,abc,1e9|catalogue^--out^${WORK}/gen"
     "generate|--max-queries|-1,abc,1e9,10x|catalogue^--out^${WORK}/gen"
@@ -65,7 +65,7 @@ if(CASE STREQUAL "option_values")
     "generate|--k-step|0,-4,61,abc|families^--out^${WORK}/gen"
     "fuzz-against|--queries|-1,0,abc,2x,1e9,10000001|${plugin_args}"
     "fuzz-against|--seed|-1,abc,1e9|${plugin_args}"
-    "fuzz-against|--threads|-1,0,2x,1e9,100000|${plugin_args}")
+    "fuzz-against|--threads|-1,2x,1e9,100000|${plugin_args}")
   foreach(c IN LISTS cases)
     string(REPLACE "|" ";" parts "${c}")
     list(GET parts 0 sub)
@@ -94,6 +94,9 @@ if(CASE STREQUAL "option_values")
   # Values at the ends of the documented ranges are accepted.
   run(check --threads 1024 --answers ${small})
   expect_output("check --threads 1024" "1\n0\n")
+  # 0: every hardware thread, as in the library, the C API and the Python module.
+  run(check --threads 0 --answers ${small})
+  expect_output("check --threads 0" "1\n0\n")
   run(check --shard 1/2 --answers ${small})
   expect_output("check --shard 1/2" "0\n")
   run(stability --families ee_parallel --k-min 1074 --k-max 1074 --instances 1 --methods filtered
@@ -103,22 +106,22 @@ if(CASE STREQUAL "option_values")
   endif()
   # The help states the ranges the parser applies (both come from one table).
   run(check --help)
-  if(NOT rc EQUAL 0 OR NOT out MATCHES "--threads N[^\n]*\n?[ ]*\\(N in 1..1024; default 1\\)")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "--threads N[^\n]*\n?[^\n]*\\(N in 0..1024; default 1\\)")
     message(FATAL_ERROR "check --help does not state the --threads range:\n${out}")
   endif()
   foreach(sub scene fuzz-against)
     run(${sub} --help)
-    if(NOT rc EQUAL 0 OR NOT out MATCHES "--threads N[^\n]*\n?[ ]*\\(N in 1..1024")
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "--threads N[^\n]*\n?[^\n]*\\(N in 0..1024")
       message(FATAL_ERROR "${sub} --help does not state the --threads range:\n${out}")
     endif()
   endforeach()
 
 elseif(CASE STREQUAL "check_threads")
-  # --threads beyond the documented 1..1024 is a usage error; 1024 is allowed, and when the
+  # --threads beyond the documented 0..1024 is a usage error; 1024 is allowed, and when the
   # system refuses threads the run degrades to fewer threads with the same answers instead of
   # aborting.
   run(check --threads 100000 --answers ${small})
-  expect_input_error("--threads 100000" "--threads needs an integer in 1..1024, not '100000'")
+  expect_input_error("--threads 100000" "--threads needs an integer in 0..1024, not '100000'")
   file(READ ${small} one)
   string(REPEAT "${one}" 600 many)
   file(WRITE ${WORK}/many-vertex-face.csv "${many}")

@@ -63,7 +63,7 @@ const std::vector<Regression> kRegressions = {
     // Wide-exponent queries the filtered method answered "no collision" before commit 0aa1a3d
     // (its static volume filter took a per-operation 2^-1075 as the underflow error, but later
     // products amplify it): the reported one, its edge-edge analogue (both derived by hand in
-    // tests/test_wide_exponents.cpp) and the instances of tests/test_wide_exponents.cpp that
+    // tests/datasets/test_wide_exponents.cpp) and the instances of tests/datasets/test_wide_exponents.cpp that
     // failed on that version's filter (all with the sheared style of families::make_wide;
     // answers by construction): seven with the test's first seeding, six with its final one.
     // Each collides.

@@ -8,6 +8,13 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc})")
 endif()
+# The headers installed besides the library's own: the version macros (generated) and the
+# header-only IPC Toolkit narrow phase.
+foreach(header IN ITEMS exactccd/version.h exactccd/ipc_toolkit.hpp exactccd/exactccd.h)
+  if(NOT EXISTS ${WORK_DIR}/prefix/include/${header})
+    message(FATAL_ERROR "cmake --install did not install include/${header}")
+  endif()
+endforeach()
 if(NM)
   file(GLOB_RECURSE libraries ${WORK_DIR}/prefix/*/libexactccd.a ${WORK_DIR}/prefix/*/libexactccd.so)
   if(NOT libraries)

@@ -129,7 +129,7 @@ TEST(MinSeparation, FilteredEqualsExactForEveryKind) {
 /// Queries in one plane of 3D space (every point at y = 0.375, as the bundled fold set; and in
 /// the plane x = z) whose triangle or edges turn through degenerate or parallel positions in
 /// [0, 1]: the interval stage walks them again without the point-triangle and edge-edge terms
-/// (interval_separation.hpp, step 5). Filtered against exact, answers and TOIs.
+/// (separation_walk.cpp, step 5: planar_walk). Filtered against exact, answers and TOIs.
 template <class Query>
 void expect_filtered_equals_exact_in_a_plane(std::uint64_t seed, int n, StageCounters& stages) {
   std::mt19937_64 rng(seed);

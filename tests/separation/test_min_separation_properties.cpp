@@ -51,23 +51,14 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // ---- the kinds, generically ---------------------------------------------------------------
 
-/// nv vertices per time; the first na belong to primitive A, the rest to B; dim 2 or 3.
+/// nv vertices per time; the first na belong to primitive A, the rest to B; dim 2 or 3 (from
+/// the kind's description: the oracle below computes the distances itself).
 template <class Q>
-struct Kind;
-#define EXACTCCD_KIND(Q, NAME, NV, NA, DIM)        \
-  template <>                                      \
-  struct Kind<Q> {                                 \
-    static constexpr int nv = NV, na = NA, dim = DIM; \
-    static constexpr const char* name = NAME;      \
-  };
-EXACTCCD_KIND(VertexFaceQuery, "vertex-face", 4, 1, 3)
-EXACTCCD_KIND(EdgeEdgeQuery, "edge-edge", 4, 2, 3)
-EXACTCCD_KIND(PointEdgeQuery, "point-edge", 3, 1, 3)
-EXACTCCD_KIND(PointPointQuery, "point-point", 2, 1, 3)
-EXACTCCD_KIND(EdgeEdge2dQuery, "edge-edge-2d", 4, 2, 2)
-EXACTCCD_KIND(PointEdge2dQuery, "point-edge-2d", 3, 1, 2)
-EXACTCCD_KIND(PointPoint2dQuery, "point-point-2d", 2, 1, 2)
-#undef EXACTCCD_KIND
+struct Kind {
+  using Description = kinds::kind_of<Q>;
+  static constexpr int nv = Description::points, na = Description::first_points, dim = Description::dimension;
+  static constexpr const char* name = Description::name.data();
+};
 
 template <class Q>
 struct Tag {
@@ -1051,17 +1042,7 @@ TEST(MinSeparationApi, RejectsInvalidParamsAndMethods) {
 }
 
 template <class Q>
-using RationalOf = std::conditional_t<
-    std::is_same_v<Q, VertexFaceQuery>, VertexFaceQueryT<mpq_class>,
-    std::conditional_t<
-        std::is_same_v<Q, EdgeEdgeQuery>, EdgeEdgeQueryT<mpq_class>,
-        std::conditional_t<
-            std::is_same_v<Q, PointEdgeQuery>, PointEdgeQueryT<mpq_class>,
-            std::conditional_t<
-                std::is_same_v<Q, PointPointQuery>, PointPointQueryT<mpq_class>,
-                std::conditional_t<std::is_same_v<Q, EdgeEdge2dQuery>, EdgeEdge2dQueryT<mpq_class>,
-                                   std::conditional_t<std::is_same_v<Q, PointEdge2dQuery>,
-                                                      PointEdge2dQueryT<mpq_class>, PointPoint2dQueryT<mpq_class>>>>>>>;
+using RationalOf = typename kinds::kind_of<Q>::template Query<mpq_class>;
 
 template <class Q>
 RationalOf<Q> rational_query(const Rows<Q>& r) {

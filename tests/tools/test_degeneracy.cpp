@@ -1,4 +1,4 @@
-// Degeneracy categories (lib/exact/degeneracy): each label on a catalogue case built to have it.
+// Degeneracy categories (tools/lib/degeneracy/degeneracy): each label on a catalogue case built to have it.
 #include "degeneracy/degeneracy.hpp"
 
 #include <gtest/gtest.h>

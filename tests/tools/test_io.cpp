@@ -1,4 +1,4 @@
-// Tests of the benchmark CSV reader and writer (lib/io/benchmark_csv).
+// Tests of the benchmark CSV reader and writer (tools/lib/io/benchmark_csv).
 #include "io/benchmark_csv.hpp"
 #include "io/truth_json.hpp"
 

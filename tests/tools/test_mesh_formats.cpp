@@ -1,4 +1,4 @@
-// The PLY, OFF and STL readers (lib/io/mesh_formats.hpp) and io::read_mesh on them: every
+// The PLY, OFF and STL readers (tools/lib/io/mesh_formats.hpp) and io::read_mesh on them: every
 // bundled tetrahedron (tests/data/meshes) is the OBJ tetrahedron; float coordinates are taken
 // exactly; other properties are skipped by type; malformed files are errors naming the file
 // and the line (text) or byte offset (binary), never an empty or partial mesh.

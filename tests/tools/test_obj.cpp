@@ -1,4 +1,4 @@
-// OBJ input and output (lib/io/obj.hpp): the accepted forms, fan triangulation, relative
+// OBJ input and output (tools/lib/io/obj.hpp): the accepted forms, fan triangulation, relative
 // indices, exact round trips, and every error naming file and line.
 #include <gtest/gtest.h>
 

@@ -366,7 +366,7 @@ bool answer(const BundledFile& f, std::size_t i, Method method) {
 
 TEST(BundledSim, TruthIsTheExactAnswerAndSharesAreSmall) {
   // Every bundled file: doubles, the truth column is the exact method's answer, a small share
-  // of collisions. (tests/cli_sim_fresh.cmake checks that the generator still writes them.)
+  // of collisions. (tests/cli/cli_sim_fresh.cmake checks that the generator still writes them.)
   const std::vector<BundledFile> files = bundled_sim_files();
   EXPECT_EQ(files.size(), 8u);
   for (const BundledFile& f : files) {

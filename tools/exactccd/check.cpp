@@ -58,8 +58,8 @@ const CommandSpec& command() {
     c.epilogue =
         "\noutput: per file, queries, truth positives, false positives, false negatives and the mean time\n"
         "per query (wall-clock time / queries, so with --threads it is the throughput); then the totals.\n"
-        "input: README, \"Input files\" (empty files, numerators or denominators over 4096 bits and,\n"
-        "for the baselines, coordinates beyond the double range are errors).\n"
+        "input: docs/formats.md, \"Input files\" (empty files, numerators or denominators over 4096\n"
+        "bits and, for the baselines, coordinates beyond the double range are errors).\n"
         "exit codes: 0 ran (whatever it found), 2 bad usage or malformed input (file:line on stderr),\n"
         "1 internal error.\n";
     return c;

@@ -264,7 +264,9 @@ CcdParams separation_params(const ParsedOptions& options) {
 }
 
 OptionSpec threads_option(const std::string& default_value, const std::string& help) {
-  return integer_option("--threads", "N", 1, kMaxThreads, default_value, help);
+  // The library's range (SceneOptions::threads, the C API, the Python module): 0 is every
+  // hardware thread.
+  return integer_option("--threads", "N", 0, kMaxThreads, default_value, help + " (0: every hardware thread)");
 }
 
 std::vector<OptionSpec> batch_option_specs() {
@@ -277,7 +279,7 @@ std::vector<OptionSpec> batch_option_specs() {
 
 BatchOptions batch_options(const ParsedOptions& options) {
   BatchOptions b;
-  b.threads = static_cast<unsigned>(options.integer("--threads"));
+  b.threads = scene::resolve_threads(static_cast<unsigned>(options.integer("--threads")));
   std::tie(b.shard_index, b.shard_count) = options.shard("--shard");
   return b;
 }

@@ -742,7 +742,7 @@ int run_fuzz_against(int argc, char** argv) {
     throw UsageError("fuzz-against: --shard needs --partial FILE (the shards are merged by exactccd merge --out DIR)");
   if (partial_path.empty() == out_dir.empty())
     throw UsageError("fuzz-against: give exactly one of --out DIR and --partial FILE");
-  const auto threads = static_cast<unsigned>(options.integer("--threads"));
+  const auto threads = scene::resolve_threads(static_cast<unsigned>(options.integer("--threads")));
   const bool shrinking = !options.flag("--no-shrink");
   if (options.positionals().empty()) throw UsageError("fuzz-against: no plug-in (see exactccd fuzz-against --help)");
   if (options.positionals().size() > 1)

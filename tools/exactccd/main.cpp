@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli_common.hpp"
+#include "exactccd/exactccd.h"
 #include "io/input_file.hpp"
 #include "subcommands.hpp"
 
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   if (first == "--version") {
-    std::cout << "exactccd " << EXACTCCD_VERSION << "\n";
+    std::cout << "exactccd " << exactccd_version() << "\n";  // the library's: one version (CMake's)
     return kExitOk;
   }
   for (const Subcommand& s : kSubcommands) {

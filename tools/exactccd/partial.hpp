@@ -7,7 +7,7 @@
 // they are the N shards of one run, concatenates their records in shard order and prints the
 // report with the same code as a single run: the single run also builds its report from these
 // records, so the two outputs are byte-identical by construction (doubles are written as hex
-// floats and read back exactly), and tests/cli_merge.cmake checks it.
+// floats and read back exactly), and tests/cli/cli_merge.cmake checks it.
 //
 // File format (text, one record per line):
 //   exactccd-partial 1

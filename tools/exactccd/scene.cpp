@@ -47,7 +47,7 @@ const CommandSpec& command() {
         "\n"
         "Input: OBJ (.obj), PLY (.ply: ASCII or binary, either byte order, float or double x y z,\n"
         "list faces), OFF (.off, ASCII) and STL (.stl, ASCII or binary; corners with exactly equal\n"
-        "coordinates are merged into one vertex), read strictly (README, \"Input files\"); float\n"
+        "coordinates are merged into one vertex), read strictly (docs/formats.md); float\n"
         "coordinates are taken exactly. A file whose content does not match its extension is an\n"
         "error. Indices are in file order (PLY, OFF: 0-based as in the file; STL: order of first\n"
         "appearance).\n";

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's summary tables from `exactccd bench --json` files (tools/plot/make_charts.sh).
+"""The summary tables (docs/performance.md) from `exactccd bench --json` files (tools/plot/make_charts.sh).
 
 usage: /usr/bin/python3 tools/plot/bench_summary.py SIM.json SEPARATION.json
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Speed against accuracy: each method's mean time per query against its error count, one panel
 per dataset group, from `exactccd bench --methods all --json` output. Also prints the table
-(markdown) that the README shows.
+(markdown) that docs/performance.md shows.
 
 usage: /usr/bin/python3 tools/plot/speed_accuracy.py BENCH.json OUT.png
 """

@@ -13,7 +13,7 @@
 // interval contains the polynomial's exact value at every t in T: a certain sign is the sign
 // at every t in T, and an exact [0, 0] is zero at every t in T. The enclosure is wider than the
 // polynomial's over a wide T (the dependency problem), which is why the stage also keeps the
-// polynomial path (interval_strategies.hpp, in_plane_verdict). Runs under the stage's upward
+// polynomial path (in_plane_over_cell.hpp, in_plane_verdict). Runs under the stage's upward
 // rounding, like everything in Interval_nt<false>.
 #pragma once
 

@@ -95,7 +95,7 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
         throw ParseError(source_name, line_number,
                          "field " + std::to_string(i + 1) + " has " + std::to_string(significant_digits(fields[i])) +
                              " digits, more than the limit of " + std::to_string(kMaxFieldBits) +
-                             " bits per numerator or denominator (README, \"Input files\")");
+                             " bits per numerator or denominator (docs/formats.md, \"Input files\")");
     }
     std::array<mpq_class, 3> coordinate{0, 0, 0};
     for (int c = 0; c < layout.dimension; ++c) {

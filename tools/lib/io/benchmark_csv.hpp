@@ -36,7 +36,7 @@ class ParseError : public InputError {
 /// denominator at most 1075). The bound caps the cost of the exact path, which grows with the
 /// size of the rationals (a 10^5-digit coordinate ran for more than 15 minutes; at this limit
 /// the worst query measured takes seconds and a few hundred MB, at 8192 bits four times
-/// that): README, "Input files", gives the measured figures and the command.
+/// that): docs/formats.md, "Input files", gives the measured figures and the command.
 constexpr std::size_t kMaxFieldBits = 4096;
 
 /// The shape of a query file: rows per query (each point at t0, then at t1) and coordinates per
@@ -81,7 +81,7 @@ int first_row_columns(std::istream& in);
 /// kMaxFieldBits bits, a zero denominator, a truth other than 0/1 or not repeated on all rows of
 /// a query, or a row count that is not a multiple of layout.rows. Rationals are canonicalized.
 /// Tolerates CR line ends, spaces around fields, blank lines and a UTF-8 byte order mark at the start. An input
-/// without rows gives no queries (callers reading a file reject that: README, "Input files").
+/// without rows gives no queries (callers reading a file reject that: docs/formats.md, "Input files").
 BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name,
                                     QueryLayout layout = {});
 

@@ -1,6 +1,6 @@
 // Every method the project's tools run (the tools library, not installed): the library's two
 // exact methods (exactccd::Method, answered through the public entry points) and the
-// non-robust baselines of lib/baseline/ (the textbook method in doubles, with a Bridson-style
+// non-robust baselines of tools/lib/baseline/ (the textbook method in doubles, with a Bridson-style
 // tolerance, and in MPFR at 24, 53, 113 and 256 bits), which the installed library does not
 // contain. The CLI (--method, --methods), the benchmarks, the tests, the fuzzers and the
 // example plug-ins name a method by tools::Method.

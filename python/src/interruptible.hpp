@@ -1,0 +1,57 @@
+// Ctrl-C in long calls of the Python module: the work runs on a helper thread with the GIL
+// released while the interpreter's thread checks for signals every 100 ms; on a signal whose
+// handler raises (KeyboardInterrupt for Ctrl-C) it sets the call's cancellation flag
+// (SceneOptions::cancel, or the batch loop's CancelScope), waits for the workers to stop (they
+// stop between chunks of a few hundred queries: well under a second) and raises that exception.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <future>
+#include <system_error>
+#include <thread>
+#include <utility>
+
+namespace exactccd::python {
+
+/// How often the waiting interpreter thread checks for signals.
+constexpr std::chrono::milliseconds kSignalPollInterval{100};
+
+/// f(cancel) (cancel: a const std::atomic<bool>* that f's work must honour) run on a helper
+/// thread, interruptible as described above. f's exception, if any, is rethrown here; after a
+/// signal, the signal handler's exception is raised whatever f did. Without a thread to spare
+/// (the system refuses one), f runs on this thread, not interruptible. Called with the GIL.
+template <class F>
+auto interruptible(F&& f) {
+  namespace py = pybind11;
+  using Result = decltype(f(static_cast<const std::atomic<bool>*>(nullptr)));
+  std::atomic<bool> cancel{false};
+  std::packaged_task<Result()> task([&] { return f(&cancel); });
+  std::future<Result> result = task.get_future();
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    std::thread helper;
+    try {
+      helper = std::thread(std::ref(task));
+    } catch (const std::system_error&) {
+      task();  // no thread to spare: here, not interruptible
+    }
+    while (helper.joinable() && result.wait_for(kSignalPollInterval) != std::future_status::ready) {
+      py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) {  // the handler raised: its exception is now set
+        interrupted = true;
+        cancel.store(true);
+        break;
+      }
+    }
+    if (helper.joinable()) helper.join();  // the workers stop soon after the flag is set
+  }
+  if (interrupted) throw py::error_already_set();
+  return result.get();
+}
+
+}  // namespace exactccd::python
