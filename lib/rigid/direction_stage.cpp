@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "contact/vec3_ops.hpp"
 #include "kinds/primitive_kinds.hpp"
@@ -69,72 +70,74 @@ DirectionFrame<Query>::DirectionFrame(const Query& q) {
 }
 
 template <class Query>
+bool DirectionFrame<Query>::certifies(const Vec3& n, unsigned used, double distance) const {
+  constexpr int first = kind_of<Query>::first_points;
+  // The projections of the translations and of the rotated points, bounded separately (header).
+  const auto project = [&](const Vec3& v) { return (n.x * v.x + n.y * v.y) + n.z * v.z; };
+  const double ta0 = project(translation_a_[0]), ta1 = project(translation_a_[1]);
+  const double tb0 = project(translation_b_[0]), tb1 = project(translation_b_[1]);
+  double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
+  for (int t = 0; t < 2; ++t)
+    for (int i = 0; i < 4; ++i) {
+      if (!(used >> i & 1)) continue;
+      const double p = project(rotated_[t][i]);
+      if (i < first)
+        a_lo = std::min(a_lo, p), a_hi = std::max(a_hi, p);
+      else
+        b_lo = std::min(b_lo, p), b_hi = std::max(b_hi, p);
+    }
+  const double norm = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+  const double threshold = (distance * norm) * (1 + 0x1p-47) + extent_y_ * 0x1p-41 + 0x1p-1060;
+  return (std::min(tb0, tb1) + b_lo) - (std::max(ta0, ta1) + a_hi) > threshold ||
+         (std::min(ta0, ta1) + a_lo) - (std::max(tb0, tb1) + b_hi) > threshold;
+}
+
+namespace {
+
+/// Feature f's natural direction from positions x (any rounding), or nothing (zero, not finite).
+std::optional<Vec3> natural_direction(const kinds::Feature& f, const std::array<Vec3, 4>& x) {
+  const auto p = [&](int j) { return x[static_cast<std::size_t>(f.points[j])]; };
+  Vec3 n{};
+  switch (f.pair) {
+    case kinds::FeaturePair::point_point: n = p(1) - p(0); break;
+    case kinds::FeaturePair::point_edge: {  // e x (r x e), r x e normalised first (no overflow)
+      const Vec3 e = p(2) - p(1), c = cross(p(0) - p(1), e);
+      const double m = largest(c);
+      if (!(m > 0 && std::isfinite(m))) return std::nullopt;
+      n = cross(e, Vec3{c.x / m, c.y / m, c.z / m});
+      break;
+    }
+    case kinds::FeaturePair::point_triangle: n = cross(p(2) - p(1), p(3) - p(1)); break;
+    case kinds::FeaturePair::edge_edge: n = cross(p(1) - p(0), p(3) - p(2)); break;
+  }
+  const double m = largest(n);
+  if (!(m > 0 && std::isfinite(m))) return std::nullopt;
+  return Vec3{n.x / m, n.y / m, n.z / m};  // largest component +-1 (header, step 5)
+}
+
+}  // namespace
+
+template <class Query>
 bool DirectionFrame<Query>::separated(double d, unsigned used, const kinds::Feature* features,
                                       std::size_t feature_count) const {
-  using Kind = kind_of<Query>;
-  constexpr int first = Kind::first_points;
-  const auto& r = rotated_;
-  const auto& ta = translation_a_;
-  const auto& tb = translation_b_;
-  const double y = extent_y_;
-  if (!std::isfinite(y)) return false;
+  constexpr int first = kind_of<Query>::first_points;
+  if (!std::isfinite(extent_y_)) return false;
   double extent_a = 0, extent_b = 0;
   for (int i = 0; i < 4; ++i)
     if (used >> i & 1) (i < first ? extent_a : extent_b) = std::max(i < first ? extent_a : extent_b, extent_[i]);
-  const double sa = sagitta_bound(extent_a, cosine_a_), sb = sagitta_bound(extent_b, cosine_b_);
-  const double distance = (d + sa) + sb, slack = y * 0x1p-41;
-  // Certifies the gap along n, normalised by its largest component (header, steps 5 and 6).
-  const auto certifies = [&](const Vec3& n) {
-    const auto project = [&](const Vec3& v) { return (n.x * v.x + n.y * v.y) + n.z * v.z; };
-    double ta_lo = project(ta[0]), ta_hi = ta_lo, tb_lo = project(tb[0]), tb_hi = tb_lo;
-    const double ta1 = project(ta[1]), tb1 = project(tb[1]);
-    ta_lo = std::min(ta_lo, ta1), ta_hi = std::max(ta_hi, ta1), tb_lo = std::min(tb_lo, tb1), tb_hi = std::max(tb_hi, tb1);
-    double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
-    for (int t = 0; t < 2; ++t)
-      for (int i = 0; i < 4; ++i) {
-        if (!(used >> i & 1)) continue;
-        const double p = project(r[t][i]);
-        if (i < first)
-          a_lo = std::min(a_lo, p), a_hi = std::max(a_hi, p);
-        else
-          b_lo = std::min(b_lo, p), b_hi = std::max(b_hi, p);
-      }
-    const double norm = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
-    const double threshold = (distance * norm) * (1 + 0x1p-47) + slack + 0x1p-1060;
-    return (tb_lo + b_lo) - (ta_hi + a_hi) > threshold || (ta_lo + a_lo) - (tb_hi + b_hi) > threshold;
-  };
-  const auto along = [&](const Vec3& n) {
-    const double m = largest(n);
-    if (!(m > 0 && std::isfinite(m))) return false;
-    return certifies(Vec3{n.x / m, n.y / m, n.z / m});
-  };
+  const double distance = (d + sagitta_bound(extent_a, cosine_a_)) + sagitta_bound(extent_b, cosine_b_);
   for (int t = 0; t < 2; ++t) {
     std::array<Vec3, 4> x;  // rounded world positions at t (any rounding: only directions)
     for (int i = 0; i < 4; ++i) {
-      const Vec3& c = i < first ? ta[t] : tb[t];
-      x[i] = {c.x + r[t][i].x, c.y + r[t][i].y, c.z + r[t][i].z};
+      const Vec3& c = i < first ? translation_a_[t] : translation_b_[t];
+      x[i] = {c.x + rotated_[t][i].x, c.y + rotated_[t][i].y, c.z + rotated_[t][i].z};
     }
-    for (std::size_t k = 0; k < feature_count; ++k) {
-      const kinds::Feature& f = features[k];
-      const auto p = [&](int j) { return x[static_cast<std::size_t>(f.points[j])]; };
-      Vec3 n{};
-      switch (f.pair) {
-        case kinds::FeaturePair::point_point: n = p(1) - p(0); break;
-        case kinds::FeaturePair::point_edge: {
-          const Vec3 e = p(2) - p(1), c = cross(p(0) - p(1), e);
-          const double m = largest(c);
-          if (!(m > 0 && std::isfinite(m))) continue;
-          n = cross(e, Vec3{c.x / m, c.y / m, c.z / m});
-          break;
-        }
-        case kinds::FeaturePair::point_triangle: n = cross(p(2) - p(1), p(3) - p(1)); break;
-        case kinds::FeaturePair::edge_edge: n = cross(p(1) - p(0), p(3) - p(2)); break;
-      }
-      if (along(n)) return true;
-    }
+    for (std::size_t k = 0; k < feature_count; ++k)
+      if (const auto n = natural_direction(features[k], x); n && certifies(*n, used, distance)) return true;
   }
   for (int axis = 0; axis < 3; ++axis)
-    if (certifies(Vec3{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0})) return true;
+    if (certifies(Vec3{axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0}, used, distance))
+      return true;
   return false;
 }
 

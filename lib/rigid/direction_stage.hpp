@@ -76,6 +76,9 @@ class DirectionFrame {
 
  private:
   bool separated(double d, unsigned used, const kinds::Feature* features, std::size_t feature_count) const;
+  /// The gap along n (largest component +-1) between the `used` points of A and of B certified
+  /// beyond `distance` |n| (d plus the sagittas), header steps 5 and 6.
+  bool certifies(const Vec3& n, unsigned used, double distance) const;
 
   std::array<std::array<Vec3, 4>, 2> rotated_;   // R(q(t)) p for t = 0, 1
   std::array<Vec3, 2> translation_a_, translation_b_;

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "kinds/primitive_kinds.hpp"
@@ -78,65 +79,20 @@ class SeparationWalk {
       : q_(q), directions_(directions), d_(d), tmax_(tmax), want_toi_(want_toi), frame_(frame) {}
 
   StageResult run() {
-    // Feature pairs whose parts a direction keeps farther than d apart over the step hold
-    // nowhere: their terms are left out (direction_stage.hpp).
-    std::uint32_t all = 0;
-    {
-      const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // its bound assumes it
-      for (std::size_t k = 0; k < Kind::features.size(); ++k)
-        if (!directions_.feature_separated(d_, k)) all |= std::uint32_t{1} << k;
-    }
+    const std::uint32_t all = terms_not_kept_apart();
     if (all == 0) return StageResult::separate(used_gmp_);
-    // 1. t = 0.
-    const auto at0 = terms_at(0.0, all);
-    bool all_fail = true;
-    for (std::size_t k = 0; k < Kind::features.size(); ++k) {
-      if (!(all >> k & 1)) continue;
-      if (holds(at0[k])) return StageResult::collides({0.0, 0.0}, used_gmp_);
-      all_fail = all_fail && fails(at0[k]);
-    }
-    if (!all_fail) return StageResult::undecided(used_gmp_);
+    if (const std::optional<StageResult> at_zero = decide_zero(all)) return *at_zero;
     // 2. The cells in time order (a stack of right halves).
-    struct Cell {
-      double a, b;
-      int depth;
-      std::uint32_t open;
-    };
     std::array<Cell, kMaxDepth + 2> stack;
     int top = 0;
     stack[top++] = {0.0, tmax_, 0, all};
-    int cells = 0;
-    while (top > 0) {
-      if (++cells > kMaxCells) return StageResult::undecided(used_gmp_);
+    for (int cells = 1; top > 0; ++cells) {
+      if (cells > kMaxCells) return StageResult::undecided(used_gmp_);
       const Cell cell = stack[--top];
-      const double m = cell.a + (cell.b - cell.a) / 2;
-      const auto mid = terms_at(m, cell.open);
-      if (!want_toi_) {  // a term certainly holding at the midpoint: a collision there or before
-        for (std::size_t k = 0; k < Kind::features.size(); ++k)
-          if ((cell.open >> k & 1) && holds(mid[k])) return StageResult::collides({0.0, m}, used_gmp_);
-      }
-      const auto over = terms_over(cell.a, cell.b, m, mid, cell.open);
       std::uint32_t open = 0;
-      int alive = -1, alive_count = 0;
-      for (std::size_t k = 0; k < Kind::features.size(); ++k)
-        if ((cell.open >> k & 1) && !excluded(over[k])) {
-          open |= std::uint32_t{1} << k;
-          alive = static_cast<int>(k);
-          ++alive_count;
-        }
-      if (alive_count == 0) continue;  // free of contact
-      if (alive_count == 1) {
-        const auto& t = over[static_cast<std::size_t>(alive)];
-        bool g_positive = true;
-        for (int i = 1; i < t.count; ++i) g_positive = g_positive && t.value[i].value.inf() > 0;
-        const std::uint32_t only = std::uint32_t{1} << alive;
-        if (g_positive && (t.value[0].slope.inf() > 0 || t.value[0].slope.sup() < 0) &&
-            terms_at(cell.a, only)[static_cast<std::size_t>(alive)].value[0].inf() > 0 &&
-            terms_at(cell.b, only)[static_cast<std::size_t>(alive)].value[0].sup() < 0) {
-          if (!want_toi_) return StageResult::collides({cell.a, cell.b}, used_gmp_);
-          return narrow(Kind::features[static_cast<std::size_t>(alive)], cell.a, cell.b);
-        }
-      }
+      if (const std::optional<StageResult> r = examine(cell, open)) return *r;
+      if (open == 0) continue;  // free of contact
+      const double m = cell.a + (cell.b - cell.a) / 2;
       if (cell.depth >= kMaxDepth || !(cell.a < m && m < cell.b)) return StageResult::undecided(used_gmp_);
       stack[top++] = {m, cell.b, cell.depth + 1, open};  // the right half after the left one
       stack[top++] = {cell.a, m, cell.depth + 1, open};
@@ -145,6 +101,73 @@ class SeparationWalk {
   }
 
  private:
+  /// A time cell [a, b] of the walk, with the terms not excluded on its parent (bit k: feature k).
+  struct Cell {
+    double a, b;
+    int depth;
+    std::uint32_t open;
+  };
+
+  /// The feature pairs whose parts no direction keeps farther than d apart over the step (a
+  /// pair kept apart holds nowhere: its term is left out; direction_stage.hpp).
+  std::uint32_t terms_not_kept_apart() const {
+    const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // the direction bound assumes it
+    std::uint32_t all = 0;
+    for (std::size_t k = 0; k < Kind::features.size(); ++k)
+      if (!directions_.feature_separated(d_, k)) all |= std::uint32_t{1} << k;
+    return all;
+  }
+
+  /// 1. t = 0: a term certainly holding is a collision at 0; unless every term certainly fails
+  /// there, undecided; otherwise nothing (the walk goes on).
+  std::optional<StageResult> decide_zero(std::uint32_t all) {
+    const auto at0 = terms_at(0.0, all);
+    bool all_fail = true;
+    for (std::size_t k = 0; k < Kind::features.size(); ++k) {
+      if (!(all >> k & 1)) continue;
+      if (holds(at0[k])) return StageResult::collides({0.0, 0.0}, used_gmp_);
+      all_fail = all_fail && fails(at0[k]);
+    }
+    if (!all_fail) return StageResult::undecided(used_gmp_);
+    return std::nullopt;
+  }
+
+  /// 2. One cell: a decision (a collision found, or its TOI narrowed), or nothing with `open` the
+  /// terms not excluded on it (0: the cell is free of contact).
+  std::optional<StageResult> examine(const Cell& cell, std::uint32_t& open) {
+    const double m = cell.a + (cell.b - cell.a) / 2;
+    const auto mid = terms_at(m, cell.open);
+    if (!want_toi_) {  // a term certainly holding at the midpoint: a collision there or before
+      for (std::size_t k = 0; k < Kind::features.size(); ++k)
+        if ((cell.open >> k & 1) && holds(mid[k])) return StageResult::collides({0.0, m}, used_gmp_);
+    }
+    const auto over = terms_over(cell.a, cell.b, m, mid, cell.open);
+    int alive = -1, alive_count = 0;
+    for (std::size_t k = 0; k < Kind::features.size(); ++k)
+      if ((cell.open >> k & 1) && !excluded(over[k])) {
+        open |= std::uint32_t{1} << k;
+        alive = static_cast<int>(k);
+        ++alive_count;
+      }
+    if (alive_count == 1 && single_root(over[static_cast<std::size_t>(alive)], static_cast<std::size_t>(alive), cell)) {
+      if (!want_toi_) return StageResult::collides({cell.a, cell.b}, used_gmp_);
+      return narrow(Kind::features[static_cast<std::size_t>(alive)], cell.a, cell.b);
+    }
+    return std::nullopt;
+  }
+
+  /// 3. The term `t` (feature k) over the cell: its g certainly positive, its f certainly > 0 at
+  /// the start, < 0 at the end, of certain slope: f has exactly one root there, where the term
+  /// holds.
+  bool single_root(const TermValues<Dual>& t, std::size_t k, const Cell& cell) const {
+    for (int i = 1; i < t.count; ++i)
+      if (!(t.value[i].value.inf() > 0)) return false;
+    const Interval& slope = t.value[0].slope;
+    if (!(slope.inf() > 0 || slope.sup() < 0)) return false;
+    const std::uint32_t only = std::uint32_t{1} << k;
+    return terms_at(cell.a, only)[k].value[0].inf() > 0 && terms_at(cell.b, only)[k].value[0].sup() < 0;
+  }
+
   std::array<TermValues<Interval>, Kind::features.size()> terms_at(double t, std::uint32_t open) const {
     return terms_of<Kind>(frame_.at(t), Interval(d_) * frame_.D_at(t), open);
   }
