@@ -37,7 +37,7 @@ A scene's broad phase kept across the calls of a line search (build once, refit 
 
 Rigid bodies (each moving from pose (c0, q0) to (c1, q1); quaternions w x y z of any length)::
 
-    rigid_vertex_face_ccd(q, min_distance=0.0, tmax=1.0, threads=0)  # q: (N, 40) float64 -> (N,) bool
+    rigid_vertex_face_ccd(q, min_distance=0.0, tmax=1.0, threads=0)  # q: (N, 40) -> (N,) bool
     rigid_vertex_face_toi(q, ...)                                     # -> (N, 2) [lo, hi]
     rigid_edge_edge_ccd / rigid_edge_edge_toi                         # (N, 40)
     rigid_find_collisions(bodies, min_distance=0.0, tmax=1.0, threads=0) -> dict

@@ -1,6 +1,6 @@
 // The rigid motion model in the Python module (docs/design.md 9): batch functions over arrays of
 // rigid queries (40 numbers each, the order of the CLI's lines and the C API) and the scene
-// functions over rigid bodies. Called from module.cpp's PYBIND11_MODULE (define_rigid).
+// functions over rigid bodies, with the module's input rules (arrays.hpp). Called from module.cpp's PYBIND11_MODULE (define_rigid).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "arrays.hpp"
 #include "exactccd/rigid.hpp"
 #include "rigid/rigid_layout.hpp"
 #include "rigid/validation.hpp"
@@ -21,32 +22,9 @@ namespace py = pybind11;
 namespace exactccd::python {
 namespace {
 
-using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
 constexpr std::size_t kChunk = 64;
-
-unsigned threads_of(long long threads) {
-  if (threads < 0) throw py::value_error("threads must be >= 0 (0: every hardware thread), not " + std::to_string(threads));
-  return scene::resolve_threads(static_cast<unsigned>(std::min<long long>(threads, scene::kMaxThreads)));
-}
-
-/// `obj` as a C-contiguous float64 array of the given shape (-1: any size); only float64 is
-/// accepted (numbers are taken exactly, never converted).
-DoubleArray doubles(const py::handle& obj, const std::string& name, const std::vector<py::ssize_t>& shape,
-                    const std::string& expected) {
-  if (obj.is_none()) throw py::value_error(name + " must be an array, not None");
-  py::array a = py::array::ensure(obj);
-  if (!a) {
-    PyErr_Clear();
-    throw py::value_error(name + " must be an array");
-  }
-  if (a.dtype().kind() != 'f' || a.itemsize() != 8) throw py::value_error(name + " must have dtype float64");
-  bool ok = a.ndim() == static_cast<py::ssize_t>(shape.size());
-  for (std::size_t k = 0; ok && k < shape.size(); ++k) ok = shape[k] < 0 || a.shape(static_cast<py::ssize_t>(k)) == shape[k];
-  if (!ok) throw py::value_error(name + " must have shape " + expected);
-  return DoubleArray::ensure(a);
-}
 
 template <class Query>
 struct RigidBatch {
@@ -54,7 +32,7 @@ struct RigidBatch {
 
   /// Validates every query (the library's message, prefixed with the row) and the parameters.
   static DoubleArray prepare(const py::handle& obj, const CcdParams& params) {
-    DoubleArray a = doubles(obj, "q", {-1, stride}, "(N, 40)");
+    DoubleArray a = float_array(obj, "q", {-1, stride}, "(N, 40)");
     Query valid{};  // all zero but the quaternions: the parameters checked, also for an empty batch
     for (RigidPose* p : {&valid.a_t0, &valid.a_t1, &valid.b_t0, &valid.b_t1}) p->q = {1, 0, 0, 0};
     (void)exactccd::ccd(valid, params, Method::filtered);
@@ -79,7 +57,7 @@ struct RigidBatch {
   static py::array_t<bool> ccd(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params);
-    const unsigned workers = threads_of(threads);
+    const unsigned workers = to_threads(threads);
     const std::size_t n = static_cast<std::size_t>(a.shape(0));
     py::array_t<bool> out(static_cast<py::ssize_t>(n));
     bool* o = out.mutable_data();
@@ -97,7 +75,7 @@ struct RigidBatch {
   static py::array_t<double> toi(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params);
-    const unsigned workers = threads_of(threads);
+    const unsigned workers = to_threads(threads);
     const std::size_t n = static_cast<std::size_t>(a.shape(0));
     py::array_t<double> out(py::array::ShapeContainer({static_cast<py::ssize_t>(n), py::ssize_t{2}}));
     double* o = out.mutable_data();
@@ -122,7 +100,7 @@ RigidBody body_of(const py::handle& item, std::size_t index) {
   const std::string name = "bodies[" + std::to_string(index) + "]";
   const py::tuple t = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
   if (t.size() != 6) throw py::value_error(name + " must be a tuple (V, F, c0, q0, c1, q1)");
-  const DoubleArray V = doubles(t[0], name + " V", {-1, 3}, "(n, 3)");
+  const DoubleArray V = float_array(t[0], name + " V", {-1, 3}, "(n, 3)");
   py::array f = py::array::ensure(t[1]);
   if (!f || f.dtype().kind() != 'i' || f.ndim() != 2 || f.shape(1) != 3)
     throw py::value_error(name + " F must be an integer array of shape (m, 3)");
@@ -139,11 +117,11 @@ RigidBody body_of(const py::handle& item, std::size_t index) {
     b.triangles.push_back(tri);
   }
   const auto vec = [&](const py::handle& o, const char* what) {
-    const DoubleArray a = doubles(o, name + " " + what, {3}, "(3,)");
+    const DoubleArray a = float_array(o, name + " " + what, {3}, "(3,)");
     return Vec3{a.data()[0], a.data()[1], a.data()[2]};
   };
   const auto quat = [&](const py::handle& o, const char* what) {
-    const DoubleArray a = doubles(o, name + " " + what, {4}, "(4,)");
+    const DoubleArray a = float_array(o, name + " " + what, {4}, "(4,)");
     return Quaternion{a.data()[0], a.data()[1], a.data()[2], a.data()[3]};
   };
   b.t0 = {vec(t[2], "c0"), quat(t[3], "q0")};
@@ -158,7 +136,7 @@ std::vector<RigidBody> bodies_of(const py::sequence& bodies) {
 }
 
 SceneOptions options_of(double min_distance, double tmax, long long threads) {
-  return SceneOptions{threads_of(threads), min_distance, tmax};
+  return SceneOptions{to_threads(threads), min_distance, tmax};
 }
 
 py::dict find_collisions(const py::sequence& bodies, double min_distance, double tmax, long long threads) {
@@ -217,11 +195,11 @@ const char* keep(std::string s) {
 
 void define_rigid(py::module_& m) {
   const std::string common =
-      "q: float64 array of shape (N, 40), one rigid query per row: cA0 (3), qA0 (4: w x y z), cA1 (3), qA1 (4), cB0 "
+      "q: array of shape (N, 40) (float64, or float32, float16 or integers, taken exactly), one rigid query per row: cA0 (3), qA0 (4: w x y z), cA1 (3), qA1 (4), cB0 "
       "(3), qB0 (4), cB1 (3), qB1 (4), then the body points (vertex-face: p of A, a b c of B; edge-edge: a0 a1 of A, "
       "b0 b1 of B). Each body moves from pose (c0, q0) to (c1, q1), c and q interpolated linearly, a point p at "
-      "c + R(q) p with R(q) = M(q) / |q|^2.\nmin_distance: d >= 0; tmax in (0, 1]; threads: worker threads (0: "
-      "all).\nRaises ValueError for a wrong shape or dtype, a non-finite number or a quaternion path through zero "
+      "c + R(q) p with R(q) = M(q) / |q|^2.\nmin_distance: d >= 0; tmax in (0, 1]; threads: worker threads in 0..1024 (0: "
+      "every hardware thread).\nRaises ValueError for a wrong shape or dtype, a non-finite number or a quaternion path through zero "
       "(naming the row), or bad parameters.";
   m.def("rigid_vertex_face_ccd", &RigidBatch<RigidVertexFaceQuery>::ccd, py::arg("q"), py::arg("min_distance") = 0.0,
         py::arg("tmax") = 1.0, py::arg("threads") = 0,
@@ -239,7 +217,7 @@ void define_rigid(py::module_& m) {
         keep(std::string("Exact rigid edge-edge time of impact of a batch: (N, 2) [lo, hi], NaN rows without a "
                      "collision.\n\n") + common));
   const std::string bodies_doc =
-      "bodies: a sequence of tuples (V, F, c0, q0, c1, q1): V float64 (n, 3) body coordinates, F integer (m, 3) "
+      "bodies: a sequence of tuples (V, F, c0, q0, c1, q1): V (n, 3) body coordinates (taken exactly, as q above), F integer (m, 3) "
       "triangles, c0, c1 (3,) translations and q0, q1 (4,) quaternions (w x y z) at t = 0 and 1. Pairs between "
       "different bodies: vertex-face both ways, edge-edge.";
   m.def("rigid_find_collisions", &find_collisions, py::arg("bodies"), py::arg("min_distance") = 0.0,

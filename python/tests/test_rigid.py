@@ -31,6 +31,28 @@ def test_closed_form_times():
     assert exactccd.rigid_vertex_face_ccd(q[:1], tmax=0.25).tolist() == [False]
 
 
+def test_coordinates_are_taken_exactly_as_by_every_function():
+    """float32, float16 and integer arrays (every value a double) are widened exactly, as for the
+    linear batch functions (docs/python.md): the same answers as float64."""
+    q = np.array([_turning_vertex((3, 4)), _turning_vertex((4, 3)), _turning_vertex((-3, 4))], dtype=np.float64)
+    expected = exactccd.rigid_vertex_face_toi(q)
+    for dtype in (np.float32, np.float16, np.int32, np.int64):
+        np.testing.assert_array_equal(exactccd.rigid_vertex_face_toi(q.astype(dtype)), expected)
+
+
+@pytest.mark.parametrize("threads", [-1, 1025, 2**40])
+def test_threads_out_of_range_are_refused(threads):
+    """The module's one range of threads, 0..1024: anything else is a ValueError, never capped."""
+    q = np.array([_turning_vertex((3, 4))], dtype=np.float64)
+    message = rf"threads must be in 0\.\.1024 \(0: every hardware thread\), not {threads}$"
+    with pytest.raises(ValueError, match=message):
+        exactccd.rigid_vertex_face_ccd(q, threads=threads)
+    with pytest.raises(ValueError, match=message):
+        exactccd.rigid_edge_edge_toi(np.zeros((0, 40)), threads=threads)
+    with pytest.raises(ValueError, match=message):
+        exactccd.rigid_max_collision_free_step([], threads=threads)
+
+
 def test_bad_input_names_the_row():
     q = np.array([_turning_vertex((3, 4)), _turning_vertex((3, 4))], dtype=np.float64)
     q[1, 10] = -2.0  # qA1 (numbers 10..13) = (-2, 0, 0, 0) = -2 qA0: the path passes through zero
@@ -39,8 +61,12 @@ def test_bad_input_names_the_row():
         exactccd.rigid_vertex_face_toi(q)
     with pytest.raises(ValueError):
         exactccd.rigid_edge_edge_ccd(np.zeros((2, 39)))
-    with pytest.raises(ValueError):
-        exactccd.rigid_vertex_face_ccd(q[:1].astype(np.float32))
+    with pytest.raises(ValueError, match=r"q\[0, 5\] = 9007199254740993 is not exactly a double"):
+        big = q[:1].astype(np.int64)
+        big[0, 5] = 2**53 + 1
+        exactccd.rigid_vertex_face_ccd(big)
+    with pytest.raises(ValueError, match="must be an array of float64"):
+        exactccd.rigid_vertex_face_ccd(q[:1].astype(np.complex128))
     with pytest.raises(ValueError):
         exactccd.rigid_vertex_face_ccd(q[:1], min_distance=-1.0)
     q[1] = q[0]
