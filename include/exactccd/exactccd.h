@@ -21,7 +21,8 @@ typedef enum exactccd_status {
   EXACTCCD_ERROR_INTERNAL = 3,   /* unexpected failure (e.g. out of memory) */
   EXACTCCD_ERROR_PARAMETER = 4,  /* unknown kind, min_distance < 0 or not finite, tmax not in (0, 1], threads > 1024 */
   EXACTCCD_ERROR_INDEX = 5,      /* a candidate's vertex index is out of range or repeated */
-  EXACTCCD_ERROR_CAPACITY = 6    /* the output arrays are too small (*count holds the size needed) */
+  EXACTCCD_ERROR_CAPACITY = 6,   /* the output arrays are too small (*count holds the size needed) */
+  EXACTCCD_ERROR_ROTATION = 7    /* a rigid body's quaternion path (1 - t) q0 + t q1 vanishes in [0, 1] */
 } exactccd_status;
 
 /* The primitive kinds (the values of the CLI's --kind in this order: vf ee pe pp ee2 pe2 pp2). */
@@ -123,6 +124,23 @@ exactccd_status exactccd_candidates_find_collisions(const double* positions_t0, 
                                                     double min_distance, double tmax, unsigned threads,
                                                     size_t capacity, size_t* count, int* kinds, size_t* rows,
                                                     double* lo, double* hi);
+
+/* Rigid bodies (exactccd/rigid.hpp): body A's vertex against body B's triangle (kind
+ * EXACTCCD_VERTEX_FACE) or A's edge against B's edge (EXACTCCD_EDGE_EDGE), each body moving from
+ * one pose to another (translation c, quaternion q = w x y z of any nonzero length; c and q
+ * interpolated linearly). A query is EXACTCCD_RIGID_QUERY_SIZE doubles: cA0 (3), qA0 (4), cA1
+ * (3), qA1 (4), cB0 (3), qB0 (4), cB1 (3), qB1 (4), then the body points in body coordinates
+ * (vertex-face: p, then a, b, c; edge-edge: a0, a1, then b0, b1). *collides = 1 when the
+ * primitives come within min_distance (>= 0) of each other at some t in [0, tmax] (tmax in
+ * (0, 1]), exactly; the _toi variant also gives the earliest such t in [*lo, *hi], the tightest
+ * double interval (lo and hi may be NULL). Statuses: EXACTCCD_ERROR_NULL,
+ * EXACTCCD_ERROR_PARAMETER (another kind, min_distance or tmax out of range),
+ * EXACTCCD_ERROR_NON_FINITE, EXACTCCD_ERROR_ROTATION (a quaternion path through zero: q0 = 0,
+ * q1 = 0 or q1 a negative multiple of q0), EXACTCCD_ERROR_INTERNAL. */
+#define EXACTCCD_RIGID_QUERY_SIZE 40
+exactccd_status exactccd_rigid_ccd(int kind, const double* query, double min_distance, double tmax, int* collides);
+exactccd_status exactccd_rigid_toi(int kind, const double* query, double min_distance, double tmax, int* collides,
+                                   double* lo, double* hi);
 
 /* A static description of a status, e.g. for error messages. */
 const char* exactccd_status_string(exactccd_status status);

@@ -158,9 +158,18 @@ std::array<Vec2T<T>, 4> rows(const PointPoint2dQueryT<T>& q) {
   return {q.p_t0, q.q_t0, q.p_t1, q.q_t1};
 }
 
-/// The coordinate type of a query type (double, mpq_class, ...): that of its rows.
+/// The coordinate type of a query type (double, mpq_class, ...): that of its rows. A query type
+/// without rows() (the rigid queries of rigid.hpp) specialises QueryCoordinate.
+template <class Query, class = void>
+struct QueryCoordinate {};
+/// The coordinate type of a query type with rows().
 template <class Query>
-using coordinate_t = std::decay_t<decltype(rows(std::declval<const Query&>())[0].x)>;
+struct QueryCoordinate<Query, std::void_t<decltype(rows(std::declval<const Query&>()))>> {
+  using type = std::decay_t<decltype(rows(std::declval<const Query&>())[0].x)>;  ///< that of its rows
+};
+/// The coordinate type of a query type.
+template <class Query>
+using coordinate_t = typename QueryCoordinate<Query>::type;
 
 /// Builds a query from its points in file row order.
 template <class Query, class Point, std::size_t N>

@@ -143,6 +143,7 @@ const char* exactccd_status_string(exactccd_status status) {
     case EXACTCCD_ERROR_PARAMETER: return "bad parameter (unknown kind, min_distance < 0 or not finite, tmax not in (0, 1], threads > 1024)";
     case EXACTCCD_ERROR_INDEX: return "a candidate's vertex index is out of range or repeated";
     case EXACTCCD_ERROR_CAPACITY: return "output arrays too small (*count holds the size needed)";
+    case EXACTCCD_ERROR_ROTATION: return "a rigid body's quaternion path passes through zero";
   }
   return "unknown status";
 }

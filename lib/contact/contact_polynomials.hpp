@@ -239,36 +239,37 @@ EdgeEdgePolys<NT> polynomials(const EdgeEdgeQueryT<NT>& q) {
 // w = da x db): where it is nonzero it consults the "proper" polynomials (barycentric
 // numerators, segment parameters), where it vanishes the "degenerate" ones (point on segment).
 
-/// The vector polynomial the in-plane rule branches on.
-template <class NT>
-const PolyVec3<NT, 2>& branch_vector(const VertexFacePolys<NT>& P) {
+/// The vector polynomial the in-plane rule branches on (for terms built from any Motion: the
+/// linear polynomials of VertexFacePolys / EdgeEdgePolys, or another motion model's).
+template <class Motion>
+const auto& branch_vector(const VertexFaceTerms<Motion>& P) {
   return P.normal();
 }
-template <class NT>
-const PolyVec3<NT, 2>& branch_vector(const EdgeEdgePolys<NT>& P) {
+template <class Motion>
+const auto& branch_vector(const EdgeEdgeTerms<Motion>& P) {
   return P.direction_cross();
 }
 
 /// Calls f on the polynomials of the branch where the branch vector is nonzero.
-template <class NT, class F>
-void for_each_proper_poly(const VertexFacePolys<NT>& P, F&& f) {
+template <class Motion, class F>
+void for_each_proper_poly(const VertexFaceTerms<Motion>& P, F&& f) {
   for (int i = 0; i < 3; ++i) f(P.barycentric(i));
 }
-template <class NT, class F>
-void for_each_proper_poly(const EdgeEdgePolys<NT>& P, F&& f) {
+template <class Motion, class F>
+void for_each_proper_poly(const EdgeEdgeTerms<Motion>& P, F&& f) {
   for (int i = 0; i < 4; ++i) f(P.parameter(i));
 }
 
 /// Calls f on the polynomials of the branch where the branch vector vanishes.
-template <class NT, class F>
-void for_each_degenerate_poly(const VertexFacePolys<NT>& P, F&& f) {
+template <class Motion, class F>
+void for_each_degenerate_poly(const VertexFaceTerms<Motion>& P, F&& f) {
   for (int i = 0; i < 3; ++i) {
     const auto& s = P.on_edge(i);
     f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);
   }
 }
-template <class NT, class F>
-void for_each_degenerate_poly(const EdgeEdgePolys<NT>& P, F&& f) {
+template <class Motion, class F>
+void for_each_degenerate_poly(const EdgeEdgeTerms<Motion>& P, F&& f) {
   for (int i = 0; i < 4; ++i) {
     const auto& s = P.endpoint_on_edge(i);
     f(s.cross.x), f(s.cross.y), f(s.cross.z), f(s.dot);

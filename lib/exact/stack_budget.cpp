@@ -71,6 +71,15 @@ std::size_t descartes_depth_bound(std::size_t coefficient_bits) {
   return 4 * coefficient_bits + kDepthMargin;
 }
 
+std::size_t descartes_depth_bound(std::size_t coefficient_bits, int degree) {
+  if (degree <= 4) return descartes_depth_bound(coefficient_bits);
+  if (degree > 15) throw std::logic_error("exactccd: descartes_depth_bound: degree above 15");
+  const std::size_t n = static_cast<std::size_t>(degree);
+  std::size_t ceil_log2_n = 0;
+  while ((std::size_t{1} << ceil_log2_n) < n) ++ceil_log2_n;
+  return n * coefficient_bits + (n - 1) * (n + 6) + (n + 2) / 2 * ceil_log2_n + ceil_log2_n + 4 + kDepthMargin;
+}
+
 void run_with_stack_for_depth(std::size_t depth, const std::function<void()>& work) {
   const std::size_t need = depth * kFrameBytes;
   // Inline when the recursion fits what this thread has left with a reserve to spare (a main

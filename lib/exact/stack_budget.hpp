@@ -28,6 +28,17 @@ namespace exactccd::exact {
 /// of degree <= 4 whose integer coefficients have at most `coefficient_bits` bits.
 std::size_t descartes_depth_bound(std::size_t coefficient_bits);
 
+/// The same bound for a polynomial of degree <= `degree` (>= 1): with n = degree and
+/// tau = coefficient_bits, a square-free factor f has coefficients of at most
+/// beta = tau + n + log2 sqrt(n + 1) bits (Mignotte), Mahler's bound gives
+/// -log2 sep(f) <= (n - 1)(beta + log2 sqrt(n + 1)) + ((n + 2) / 2) log2 n, and the depth is at
+/// most (tau + 2) + (-log2 sep(f) + 2) <= n tau + (n - 1)(n + 2 + 2 log2 sqrt(n + 1)) +
+/// ((n + 2) / 2) log2 n + 4, which (n - 1)(n + 6) + ((n + 2) / 2) ceil(log2 n) + 4 bounds for
+/// n <= 15 (2 log2 sqrt(n + 1) = log2(n + 1) <= 4); plus the margin of 64. For n <= 4 it is the bound above.
+/// Used by the rigid motion model (degree <= 10, docs/design.md 9). Throws std::logic_error
+/// for a degree above 15.
+std::size_t descartes_depth_bound(std::size_t coefficient_bits, int degree);
+
 /// Runs `work` on the calling thread when `depth` recursion levels of CGAL's isolation fit what
 /// is left of its stack (measured where the platform tells, with a reserve; 64 KB where it does
 /// not), otherwise on a new thread whose stack holds `depth` levels (and waits for it; an

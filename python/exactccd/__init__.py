@@ -35,6 +35,16 @@ A scene's broad phase kept across the calls of a line search (build once, refit 
     bp.update(V1_trial); bp.max_collision_free_step()   # also find_collisions(), earliest_toi(),
                                                        # is_collision_free(), candidates, edges
 
+Rigid bodies (each moving from pose (c0, q0) to (c1, q1); quaternions w x y z of any length)::
+
+    rigid_vertex_face_ccd(q, min_distance=0.0, tmax=1.0, threads=0)  # q: (N, 40) -> (N,) bool
+    rigid_vertex_face_toi(q, ...)                                     # -> (N, 2) [lo, hi]
+    rigid_edge_edge_ccd / rigid_edge_edge_toi                         # (N, 40)
+    rigid_find_collisions(bodies, min_distance=0.0, tmax=1.0, threads=0) -> dict
+    rigid_earliest_toi(bodies, ...) -> (lo, hi) or None
+    rigid_max_collision_free_step(bodies, ...) -> float
+    # bodies: a sequence of (V, F, c0, q0, c1, q1)
+
 Every answer is exact; a time of impact is the tightest double interval [lo, hi] holding the exact
 time. Coordinates are float64 arrays, or float32/float16 (widened exactly), or integer arrays whose
 every value is a double. threads is in 0..1024 (0: every hardware thread). Bad input (shape,
@@ -62,6 +72,13 @@ from ._exactccd import (  # noqa: F401
     is_collision_free,
     max_collision_free_step,
     read_mesh,
+    rigid_earliest_toi,
+    rigid_edge_edge_ccd,
+    rigid_edge_edge_toi,
+    rigid_find_collisions,
+    rigid_max_collision_free_step,
+    rigid_vertex_face_ccd,
+    rigid_vertex_face_toi,
 )
 
 #: The batch functions' kinds (the library's one list of kinds): function stem -> (rows per
@@ -74,5 +91,6 @@ __all__ = [
     "EDGE_EDGE", "KIND_NAMES", "KINDS", "POINT_EDGE", "POINT_POINT", "SceneBroadPhase", "VERTEX_FACE",
     "candidates_earliest_toi", "candidates_find_collisions", "candidates_is_collision_free",
     "candidates_max_collision_free_step", "earliest_toi", "find_collisions", "intersection_free", "is_collision_free",
-    "max_collision_free_step", "read_mesh",
+    "max_collision_free_step", "read_mesh", "rigid_earliest_toi", "rigid_edge_edge_ccd", "rigid_edge_edge_toi",
+    "rigid_find_collisions", "rigid_max_collision_free_step", "rigid_vertex_face_ccd", "rigid_vertex_face_toi",
 ] + [f"{k}_{f}" for k in KINDS for f in ("ccd", "toi")]

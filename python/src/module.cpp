@@ -35,15 +35,18 @@
 #include "io/mesh_file.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "scene/parallel.hpp"
+#include "arrays.hpp"
 #include "interruptible.hpp"
 
 namespace py = pybind11;
 
 namespace exactccd::python {
+
+/// The rigid motion model's functions (rigid_module.cpp).
+void define_rigid(py::module_& m);
+
 namespace {
 
-/// A C-contiguous float64 array.
-using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 /// A C-contiguous int64 array.
 using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
@@ -126,6 +129,8 @@ void require_exact_dtype(const py::array& a, const std::string& name) {
                         "doubles), not " + dtype_string(a));
 }
 
+}  // namespace
+
 /// `obj` as a C-contiguous float64 array of `ndim` dimensions whose trailing dimensions are
 /// `tail` (-1: any). Coordinates are taken exactly, never rounded: float64 as it is, float32
 /// and float16 widened (exact), integers when each is a double (require_exact_dtype).
@@ -138,6 +143,8 @@ DoubleArray float_array(const py::handle& obj, const std::string& name, std::vec
   require_exact_dtype(a, name);
   return DoubleArray::ensure(a);
 }
+
+namespace {
 
 /// `obj` as a C-contiguous int64 array of shape (n, width) (width 0: shape (n,)); None and
 /// empty arrays of any dtype give an empty array.
@@ -189,8 +196,12 @@ unsigned checked_threads(long long threads) {
   return static_cast<unsigned>(threads);
 }
 
+}  // namespace
+
 /// The number of worker threads for `threads` (0: every hardware thread).
 unsigned to_threads(long long threads) { return scene::resolve_threads(checked_threads(threads)); }
+
+namespace {
 
 /// Keeps the names and docstrings of the generated functions alive for the interpreter's life.
 const char* keep(std::string s) {
@@ -814,6 +825,7 @@ PYBIND11_MODULE(_exactccd, m) {
     batch_kinds[py::str(std::string(Kind::function))] = py::make_tuple(2 * Kind::points, Kind::dimension);
   });
   m.attr("KINDS") = batch_kinds;
+  define_rigid(m);
 
   m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);
   m.attr("EDGE_EDGE") = static_cast<int>(CollisionKind::edge_edge);

@@ -11,6 +11,7 @@
 
 #include "cli_common.hpp"
 #include "output_file.hpp"
+#include "rigid_cli.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -46,9 +47,17 @@ const CommandSpec& command() {
         "d is that fraction of each query's bounding-box size: the largest extent of its points at\n"
         "t0 and t1); FP and FN at d > 0 or tmax < 1 are against Method::exact at the same question\n"
         "(the file's truth column is the contact question's). Only filtered and exact answer them.\n"
-        "gmp_cgal: queries of the filtered method decided with GMP integers or CGAL (integer + exact).\n";
+        "gmp_cgal: queries of the filtered method decided with GMP integers or CGAL (integer + exact).\n"
+        "\n"
+        "--motion rigid: the rigid filtered method on rigid query files (default: data/rigid) against the\n"
+        "linear filtered method on the same bodies' linearised queries (every vertex's positions at t0\n"
+        "and t1 as a linear query), per file and d: mean and median ns per query of each, the ratio of\n"
+        "the means, FP/FN of the rigid method (against the truth column at d = 0 and tmax = 1, else\n"
+        "against the rigid Method::exact; with --methods containing exact, always against it),\n"
+        "gmp_cgal and the stages of the first repetition.\n";
     c.options = {
         kind_option("query kind of the files (default: inferred from the path)"),
+        motion_option(),
         integer_option("--repetitions", "N", 1, kMaxRepetitions, "5", "repetitions per dataset and method"),
         choice_list_option("--methods", "LIST", all_method_names(), "naive,filtered,exact",
                            "the methods to run"),
@@ -181,6 +190,7 @@ int run_bench(int argc, char** argv) {
   const std::vector<double> distances = parse_distances(options.text("--min-distances"));
   const bool relative = options.flag("--relative");
   const double tmax = options.real("--tmax");
+  if (rigid_motion(options)) return run_rigid_bench(options, distances, relative, tmax);
   std::vector<std::string> files = options.positionals();
   // An unwritable --json FILE fails now, not after the whole run.
   std::optional<AtomicOutputFile> json_file;

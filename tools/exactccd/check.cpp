@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "rigid_cli.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -29,9 +30,15 @@ const CommandSpec& command() {
         "no truth column; kind 'vf' or 'ee' at the end of the file name, e.g. 227vf.csv) take their\n"
         "truth from a JSON array of booleans: --truth FILE.json, or found by name\n"
         "(DIR/queries/227vf.csv -> DIR/mma_bool/227vf_mma_bool.json). Without one such a file is an\n"
-        "error, except with --answers (which needs no truth).\n";
+        "error, except with --answers (which needs no truth).\n"
+        "\n"
+        "--motion rigid: rigid bodies (--kind vf|ee; see --motion below): vertex p of body A against\n"
+        "triangle (a, b, c) of body B, or edge (a0, a1) of A against edge (b0, b1) of B, each body moving\n"
+        "from pose (c0, q0) to (c1, q1) (c and the quaternion q interpolated linearly; docs/design.md 9);\n"
+        "methods filtered and exact.\n";
     c.options = {
         kind_option("query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)"),
+        motion_option(),
         choice_option("--method", "NAME", all_method_names(), "filtered",
                       "filtered (exact), exact (CGAL reference; slow); baselines, NOT robust:\n"
                       "naive (textbook doubles), naive-tolerance (Bridson-style tolerance),\n"
@@ -73,6 +80,7 @@ int run_check(int argc, char** argv) {
     std::cout << help_text(command());
     return kExitOk;
   }
+  if (rigid_motion(options)) return run_rigid_check(options);
   const std::optional<QueryKind> kind = kind_of(options);
   const tools::Method method = parse_method(options.text("--method"));
   const bool answers = options.flag("--answers"), stats = options.flag("--stats"), json = options.flag("--json");

@@ -12,6 +12,7 @@
 #include "fuzz/catalogue.hpp"
 #include "fuzz/families.hpp"
 #include "output_file.hpp"
+#include "rigid_cli.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scenes/sim_queries.hpp"
 #include "subcommands.hpp"
@@ -37,7 +38,8 @@ const CommandSpec& command() {
         "       exactccd generate sim --scene cloth|strip|fold|pile [--resolution N] [--seed S]\n"
         "                             [--max-queries M] [--truth exact|filtered] --out DIR\n"
         "       exactccd generate families [--seed S] [--instances N] [--k-step K] [--wide] --out DIR\n"
-        "       exactccd generate scene --scene NAME [--resolution N] [--seed S] --out DIR\n";
+        "       exactccd generate scene --scene NAME [--resolution N] [--seed S] --out DIR\n"
+        "       exactccd generate rigid [--seed S] [--max-queries M] --out DIR\n";
     c.description =
         "Writes query sets in the benchmark CSV format (8 rows per query, exact rationals, truth column).\n"
         "\n"
@@ -54,6 +56,10 @@ const CommandSpec& command() {
         "              in every wide style instead (families::make_wide: per-axis power-of-two\n"
         "              scales from the subnormal to the overflow end, translations, shears, all\n"
         "              exact) in DIR/families-wide-vertex-face.csv and families-wide-edge-edge.csv\n"
+        "  rigid       rigid queries (--motion rigid files): the degenerate rigid families (d = 0; truth\n"
+        "              by construction, checked against Method::exact) and the candidates of tumbling\n"
+        "              bodies (a box onto a plane, interlocked rings; truth Method::exact, at most M per\n"
+        "              file): DIR/rigid-families-*.csv, DIR/rigid-sim-<scene>-*.csv\n"
         "  scene       one time step of a procedural scene as two meshes, DIR/T0.obj (t = 0) and\n"
         "              DIR/T1.obj (t = 1), for exactccd scene\n"
         "  sim         simulation-like queries: the broad-phase candidates of one time step of a\n"
@@ -183,8 +189,9 @@ int run_generate(int argc, char** argv) {
   if (options.positionals().size() > 1)
     throw UsageError("generate: unexpected argument '" + options.positionals()[1] + "'");
   const std::string what = options.positionals().empty() ? "" : options.positionals()[0];
-  if (what != "catalogue" && what != "sim" && what != "families" && what != "scene")
-    throw UsageError("generate: expected catalogue, sim, families or scene (see exactccd generate --help)");
+  if (what != "catalogue" && what != "sim" && what != "families" && what != "scene" && what != "rigid")
+    throw UsageError("generate: expected catalogue, sim, families, scene or rigid (see exactccd generate --help)");
+  if (what == "rigid") return generate_rigid(seed, max_queries, 2, out);
   if (what == "scene") return generate_scene(scene_name, resolution, seed, out);
   if (what == "catalogue") {
     prepare_output_directory(out);

@@ -1,0 +1,121 @@
+#include "rigid/contact_walk.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "contact/contact_rule.hpp"
+#include "rigid/bernstein.hpp"
+#include "rigid/interval_frame.hpp"
+#include "rigid/positions.hpp"
+#include "rigid/sign_at.hpp"
+
+namespace exactccd::rigid {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+SignClass sign_class(int s) { return s > 0 ? SignClass::positive : s < 0 ? SignClass::negative : SignClass::zero; }
+
+/// The sign oracle over a cell: certain interval signs, an exact [0, 0] as 0, else unknown.
+int oracle_sign(const Interval& x) {
+  if (x.inf() > 0) return 1;
+  if (x.sup() < 0) return -1;
+  if (x.inf() == 0 && x.sup() == 0) return 0;
+  return contact::kUnknownSign;
+}
+
+template <class Query>
+class ContactWalk {
+ public:
+  ContactWalk(const Query& q, const IntervalFrame<Query>& frame) : q_(q), frame_(frame) {}
+
+  /// V's exact sign at the double t (an interval, else double-double or GMP).
+  int sign_at(double t) {
+    const Interval v = frame_.volume().at(t);
+    if (v.inf() > 0) return 1;
+    if (v.sup() < 0) return -1;
+    if (v.inf() == 0 && v.sup() == 0) return 0;
+    const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // double-double needs it
+    return volume_sign_at(q_, t, used_gmp_);
+  }
+
+  /// The in-plane rule at the root in `cell`, the cell narrowed while it is uncertain.
+  contact::Truth rule_at_root(RootCell& cell) {
+    for (int attempt = 0;; ++attempt) {
+      const auto boxes = cell.lo == cell.hi ? frame_.at(cell.lo) : frame_.boxes(cell.lo, cell.hi);
+      const auto terms = value_terms<Query>(boxes);
+      const contact::Truth t = contact::in_plane_contact(terms, [](const Interval& x) { return oracle_sign(x); });
+      if (t != contact::Truth::unknown || cell.lo == cell.hi || attempt == 24) return t;
+      const double mid = cell.lo + (cell.hi - cell.lo) / 2;
+      if (!(cell.lo < mid && mid < cell.hi)) return t;
+      const int s = sign_at(mid);
+      if (s == 0)
+        cell = {mid, mid, 0};
+      else
+        (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
+    }
+  }
+
+  /// The tightest double interval around the root in `cell` (exact signs at doubles).
+  TimeInterval tightest(RootCell cell) {
+    while (cell.lo < cell.hi && std::nextafter(cell.lo, kInf) < cell.hi) {
+      double mid = cell.lo + (cell.hi - cell.lo) / 2;
+      if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, kInf);
+      const int s = sign_at(mid);
+      if (s == 0) return {mid, mid};
+      (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
+    }
+    return {cell.lo, cell.hi};
+  }
+
+  bool used_gmp() const { return used_gmp_; }
+
+ private:
+  const Query& q_;
+  const IntervalFrame<Query>& frame_;
+  bool used_gmp_ = false;
+};
+
+/// The TOI restricted to [0, tmax] (the tightest enclosure [lo, hi] of t: t <= tmax iff lo <= tmax
+/// when lo == hi, else hi <= tmax).
+bool within(const TimeInterval& t, double tmax) { return t.lo == t.hi ? t.lo <= tmax : t.hi <= tmax; }
+
+template <class Query>
+StageResult walk(const Query& q, const IntervalFrame<Query>& frame, double tmax, bool want_toi) {
+  const bool narrow = want_toi || tmax < 1;
+  ContactWalk<Query> w(q, frame);
+  using Isolation = BernsteinIsolation<5>;
+  const Isolation::Coefficients b = Isolation::of(frame.volume().p);
+  SignClass first = classify(b[0]), last = classify(b[5]);
+  if (first == SignClass::unknown) first = sign_class(w.sign_at(0.0));
+  if (last == SignClass::unknown) last = sign_class(w.sign_at(1.0));
+  boost::container::small_vector<RootCell, 8> cells;
+  if (first == SignClass::zero) cells.push_back({0.0, 0.0, 0});
+  if (!Isolation::isolate(b, 0.0, 1.0, 0, cells, first, last)) return StageResult::undecided(w.used_gmp());
+  if (last == SignClass::zero) cells.push_back({1.0, 1.0, 0});
+  for (RootCell cell : cells) {
+    if (cell.lo > tmax) break;  // later roots are later still
+    const contact::Truth t = w.rule_at_root(cell);
+    if (t == contact::Truth::unknown) return StageResult::undecided(w.used_gmp());
+    if (t == contact::Truth::no) continue;
+    if (!narrow) return StageResult::collides({cell.lo, cell.hi}, w.used_gmp());
+    const TimeInterval toi = w.tightest(cell);
+    if (!within(toi, tmax)) return StageResult::separate(w.used_gmp());
+    return StageResult::collides(toi, w.used_gmp());
+  }
+  return StageResult::separate(w.used_gmp());
+}
+
+}  // namespace
+
+StageResult contact_walk(const RigidVertexFaceQuery& q, const IntervalFrame<RigidVertexFaceQuery>& frame, double tmax,
+                         bool want_toi) {
+  return walk(q, frame, tmax, want_toi);
+}
+StageResult contact_walk(const RigidEdgeEdgeQuery& q, const IntervalFrame<RigidEdgeEdgeQuery>& frame, double tmax,
+                         bool want_toi) {
+  return walk(q, frame, tmax, want_toi);
+}
+
+}  // namespace exactccd::rigid
