@@ -211,7 +211,8 @@ void validate(const std::vector<RigidBody>& bodies);
 /// Every colliding pair (vertex-face first, by (body_a, vertex, body_b, triangle); then edge-edge
 /// by (body_a, body_b, edge_a, edge_b)) with its TOI, for CcdParams{options.min_distance,
 /// options.tmax}; on options.threads threads (the result does not depend on them). Throws
-/// std::invalid_argument on a malformed body (validate) or invalid options.
+/// std::invalid_argument on a malformed body (validate) or invalid options; exactccd::Cancelled
+/// when options.cancel is set during the call (as the linear scene functions of scene.hpp).
 std::vector<RigidCollision> rigid_find_collisions(const std::vector<RigidBody>& bodies, const SceneOptions& options = {});
 
 /// The earliest time of impact over every pair (the tightest double interval), or nullopt.

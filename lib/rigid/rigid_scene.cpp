@@ -8,7 +8,6 @@
 #include <tuple>
 
 #include "exactccd/rigid.hpp"
-#include "numeric/fp_environment.hpp"
 #include "rigid/swept_box.hpp"
 #include "rigid/validation.hpp"
 #include "scene/box_tree.hpp"
@@ -58,7 +57,7 @@ std::vector<std::array<int, 2>> overlapping(const scene::BoxTree& a, const scene
 }
 
 std::vector<RigidCollision> collisions(const std::vector<RigidBody>& bodies, const SceneOptions& options) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  const scene::SceneCall call(options.cancel);  // the default FP environment, and Ctrl-C (SceneOptions::cancel)
   validate(options);
   validate(bodies);
   std::vector<PreparedBody> prepared;
@@ -92,7 +91,8 @@ std::vector<RigidCollision> collisions(const std::vector<RigidBody>& bodies, con
   // The narrow phase.
   const CcdParams params{options.min_distance, options.tmax};
   std::vector<char> hit(candidates.size());
-  scene::parallel_ranges(candidates.size(), scene::resolve_threads(options.threads), 64, [&](std::size_t begin, std::size_t end) {
+  // In chunks also on one thread: a set cancellation flag stops the loop between chunks.
+  scene::parallel_chunks(candidates.size(), scene::resolve_threads(options.threads), 64, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t k = begin; k < end; ++k) {
       RigidCollision& c = candidates[k];
       const RigidBody &A = bodies[c.body_a], &B = bodies[c.body_b];
@@ -107,6 +107,7 @@ std::vector<RigidCollision> collisions(const std::vector<RigidBody>& bodies, con
       }
       if (t) c.toi = *t, hit[k] = 1;
     }
+    return true;
   });
   std::vector<RigidCollision> out;
   for (std::size_t k = 0; k < candidates.size(); ++k)

@@ -15,6 +15,9 @@
 #include <thread>
 #include <utility>
 
+#include "exactccd/scene.hpp"
+#include "scene/parallel.hpp"
+
 namespace exactccd::python {
 
 /// How often the waiting interpreter thread checks for signals.
@@ -52,6 +55,44 @@ auto interruptible(F&& f) {
   }
   if (interrupted) throw py::error_already_set();
   return result.get();
+}
+
+/// Queries per chunk of the thread pool: small enough to balance queries of very different
+/// cost (an exact fallback costs 100x a filtered answer), large enough to amortise the hand-out.
+constexpr std::size_t kChunk = 64;
+
+/// Batches of at most this many queries run on the calling thread (a few milliseconds at most
+/// for filtered answers), larger ones interruptibly (a helper thread, about 50 us to start).
+constexpr std::size_t kInterruptibleBatch = 4096;
+
+/// body(begin, end) over chunks of [0, n) on `workers` threads, the GIL released; a batch of
+/// more than kInterruptibleBatch queries runs interruptibly (Ctrl-C). Called with the GIL.
+template <class Body>
+void run_batch(std::size_t n, unsigned workers, Body&& body) {
+  const auto loop = [&](const std::atomic<bool>* cancel) {
+    const scene::CancelScope cancel_scope(cancel);  // parallel_chunks stops when it is set
+    scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
+      body(begin, end);
+      return true;
+    });
+    return true;
+  };
+  if (n > kInterruptibleBatch) {
+    interruptible(loop);
+  } else {
+    pybind11::gil_scoped_release release;
+    loop(nullptr);
+  }
+}
+
+/// f(options with the call's cancellation flag), interruptible: a scene call. Called with the GIL.
+template <class F>
+auto with_cancel(const SceneOptions& options, F&& f) {
+  return interruptible([&](const std::atomic<bool>* cancel) {
+    SceneOptions o = options;
+    o.cancel = cancel;
+    return f(o);
+  });
 }
 
 }  // namespace exactccd::python

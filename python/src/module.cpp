@@ -212,15 +212,6 @@ const char* keep(std::string s) {
 
 // --- batch functions, one template over the kinds --------------------------------------------
 
-/// Queries per chunk of the thread pool: small enough to balance queries of very different
-/// cost (an exact fallback costs 100x a filtered answer), large enough to amortise the hand-out.
-constexpr std::size_t kChunk = 64;
-
-/// Batches of at most this many queries run on the calling thread (a few milliseconds at most
-/// for filtered answers), larger ones interruptibly (interruptible.hpp: a helper thread, about
-/// 50 us to start).
-constexpr std::size_t kInterruptibleBatch = 4096;
-
 template <class Kind>
 struct Batch {
   using Query = typename Kind::template Query<double>;
@@ -272,26 +263,6 @@ struct Batch {
     return a;
   }
 
-  /// body(begin, end) over chunks of [0, n) on `workers` threads, the GIL released; a batch
-  /// of more than kInterruptibleBatch queries runs interruptibly (Ctrl-C).
-  template <class Body>
-  static void run(std::size_t n, unsigned workers, Body&& body) {
-    const auto loop = [&](const std::atomic<bool>* cancel) {
-      const scene::CancelScope cancel_scope(cancel);  // parallel_chunks stops when it is set
-      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-        body(begin, end);
-        return true;
-      });
-      return true;
-    };
-    if (n > kInterruptibleBatch) {
-      interruptible(loop);
-    } else {
-      py::gil_scoped_release release;
-      loop(nullptr);
-    }
-  }
-
   static py::array_t<bool> ccd(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params, false);
@@ -300,7 +271,7 @@ struct Batch {
     py::array_t<bool> out(static_cast<py::ssize_t>(n));
     bool* o = out.mutable_data();
     const double* in = a.data();
-    run(n, workers, [&](std::size_t begin, std::size_t end) {
+    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(query(in + i * stride), params);
     });
     return out;
@@ -314,7 +285,7 @@ struct Batch {
     auto out = shaped<py::array_t<double>>({static_cast<py::ssize_t>(n), 2});
     double* o = out.mutable_data();
     const double* in = a.data();
-    run(n, workers, [&](std::size_t begin, std::size_t end) {
+    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const std::optional<TimeInterval> t = exactccd::toi(query(in + i * stride), params);
         o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
@@ -402,16 +373,6 @@ SceneOptions make_options(double min_distance, double tmax, long long threads) {
   o.min_distance = min_distance;
   o.tmax = tmax;
   return o;
-}
-
-/// f(options with the call's cancellation flag), interruptible (interruptible.hpp).
-template <class F>
-auto with_cancel(const SceneOptions& options, F&& f) {
-  return interruptible([&](const std::atomic<bool>* cancel) {
-    SceneOptions o = options;
-    o.cancel = cancel;
-    return f(o);
-  });
 }
 
 py::dict collisions_dict(const std::vector<Collision>& cs) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "interruptible.hpp"
 #include "exactccd/rigid.hpp"
 #include "rigid/rigid_layout.hpp"
 #include "rigid/validation.hpp"
@@ -23,8 +24,6 @@ namespace exactccd::python {
 namespace {
 
 using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
-
-constexpr std::size_t kChunk = 64;
 
 template <class Query>
 struct RigidBatch {
@@ -62,13 +61,9 @@ struct RigidBatch {
     py::array_t<bool> out(static_cast<py::ssize_t>(n));
     bool* o = out.mutable_data();
     const double* in = a.data();
-    {
-      py::gil_scoped_release release;
-      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-        for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(rigid::from_numbers<Query>(in + i * stride), params);
-        return true;
-      });
-    }
+    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(rigid::from_numbers<Query>(in + i * stride), params);
+    });
     return out;
   }
 
@@ -80,17 +75,13 @@ struct RigidBatch {
     py::array_t<double> out(py::array::ShapeContainer({static_cast<py::ssize_t>(n), py::ssize_t{2}}));
     double* o = out.mutable_data();
     const double* in = a.data();
-    {
-      py::gil_scoped_release release;
-      scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-        for (std::size_t i = begin; i < end; ++i) {
-          const auto t = exactccd::toi(rigid::from_numbers<Query>(in + i * stride), params);
-          o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
-          o[2 * i + 1] = t ? t->hi : std::numeric_limits<double>::quiet_NaN();
-        }
-        return true;
-      });
-    }
+    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const auto t = exactccd::toi(rigid::from_numbers<Query>(in + i * stride), params);
+        o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
+        o[2 * i + 1] = t ? t->hi : std::numeric_limits<double>::quiet_NaN();
+      }
+    });
     return out;
   }
 };
@@ -142,11 +133,8 @@ SceneOptions options_of(double min_distance, double tmax, long long threads) {
 py::dict find_collisions(const py::sequence& bodies, double min_distance, double tmax, long long threads) {
   const std::vector<RigidBody> b = bodies_of(bodies);
   const SceneOptions options = options_of(min_distance, tmax, threads);
-  std::vector<RigidCollision> hits;
-  {
-    py::gil_scoped_release release;
-    hits = rigid_find_collisions(b, options);
-  }
+  const std::vector<RigidCollision> hits =
+      with_cancel(options, [&](const SceneOptions& oc) { return rigid_find_collisions(b, oc); });
   const auto n = static_cast<py::ssize_t>(hits.size());
   py::array_t<std::int64_t> kind(n), body_a(n), body_b(n), vertex(n), triangle(n);
   py::array_t<std::int64_t> edge_a(py::array::ShapeContainer({n, py::ssize_t{2}})), edge_b(py::array::ShapeContainer({n, py::ssize_t{2}}));
@@ -168,11 +156,8 @@ py::dict find_collisions(const py::sequence& bodies, double min_distance, double
 py::object earliest_toi(const py::sequence& bodies, double min_distance, double tmax, long long threads) {
   const std::vector<RigidBody> b = bodies_of(bodies);
   const SceneOptions options = options_of(min_distance, tmax, threads);
-  std::optional<TimeInterval> t;
-  {
-    py::gil_scoped_release release;
-    t = rigid_earliest_toi(b, options);
-  }
+  const std::optional<TimeInterval> t =
+      with_cancel(options, [&](const SceneOptions& oc) { return rigid_earliest_toi(b, oc); });
   if (!t) return py::none();
   return py::make_tuple(t->lo, t->hi);
 }
@@ -180,8 +165,7 @@ py::object earliest_toi(const py::sequence& bodies, double min_distance, double 
 double max_step(const py::sequence& bodies, double min_distance, double tmax, long long threads) {
   const std::vector<RigidBody> b = bodies_of(bodies);
   const SceneOptions options = options_of(min_distance, tmax, threads);
-  py::gil_scoped_release release;
-  return rigid_max_collision_free_step(b, options);
+  return with_cancel(options, [&](const SceneOptions& oc) { return rigid_max_collision_free_step(b, oc); });
 }
 
 /// Keeps a docstring alive for the interpreter's life.

@@ -35,6 +35,12 @@ if what == "batch":
     big = np.tile(small, (20, 1, 1))
     call = lambda q: exactccd.vertex_face_toi(q, min_distance=1e-3, threads=2)
     args_small, args_big = (small,), (big,)
+elif what == "rigid_batch":
+    base = np.load(sys.argv[2])
+    small = np.tile(base, (max(1, 2000 // len(base)), 1))  # about 0.1 ms each: the slowest bundled set
+    big = np.tile(small, (20, 1))
+    call = lambda q: exactccd.rigid_edge_edge_toi(q, threads=2)
+    args_small, args_big = (small,), (big,)
 elif what == "scene":
     n = int(sys.argv[2])
     small, big = soup(n // 20), soup(n)
@@ -103,3 +109,13 @@ def test_ctrl_c_stops_a_long_scene_call(tmp_path):
 
 def test_ctrl_c_stops_a_long_broad_phase_query(tmp_path):
     check(*run_and_interrupt(tmp_path, "broad_phase", "200000"))
+
+
+def test_ctrl_c_stops_a_long_rigid_batch_call(tmp_path):
+    import numpy as np
+    from conftest import DATA
+
+    path = DATA / "rigid" / "rigid-families-edge-edge.csv"
+    rows = [line.split(",") for line in open(path, encoding="utf-8") if line.strip() and not line.startswith("#")]
+    np.save(tmp_path / "base.npy", np.array([[float.fromhex(x) for x in r[:40]] for r in rows], dtype=np.float64))
+    check(*run_and_interrupt(tmp_path, "rigid_batch", str(tmp_path / "base.npy")))

@@ -115,7 +115,12 @@ TEST(Options, Unsigned64RejectsNegativesAndPrefixes) {
 TEST(Options, RealsAreFiniteAndInRange) {
   EXPECT_EQ(parse({"--scale", "4"}).real("--scale"), 4.0);
   EXPECT_EQ(parse({"--scale", "5e-1"}).real("--scale"), 0.5);
-  for (const char* bad : {"4.0001", "0.25", "nan", "inf", "1x", "", "0x1p0"})
+  // Hexadecimal literals as in the data files (strtod's forms): exact powers of two and more.
+  EXPECT_EQ(parse({"--scale", "0x1p0"}).real("--scale"), 1.0);
+  EXPECT_EQ(parse({"--scale", "0x1.8p1"}).real("--scale"), 3.0);
+  EXPECT_EQ(parse({"--scale", "0X1.fffffffffffffp-1"}).real("--scale"), 0x1.fffffffffffffp-1);
+  for (const char* bad : {"4.0001", "0.25", "nan", "inf", "1x", "", "0x1p3", "0x", "0x-1p0", "0xg", "0x1p0x",
+                          "-0x1p0", "--0x1p0"})
     EXPECT_NE(error_of({"--scale", bad}).find("demo: --scale needs a finite number in [0.5, 4], not '"),
               std::string::npos)
         << bad;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <tuple>
@@ -225,6 +226,25 @@ TEST(RigidScene, MalformedBodiesAreRefused) {
   EXPECT_THROW(rigid_find_collisions({ok, bad}), std::invalid_argument);
   EXPECT_THROW(rigid_find_collisions({ok, ok}, SceneOptions{1, -1.0, 1.0}), std::invalid_argument);
   EXPECT_NO_THROW(rigid_find_collisions({ok, ok}));
+}
+
+TEST(RigidScene, ASetCancellationFlagStopsEveryFunction) {
+  // SceneOptions::cancel as in the linear scene functions (what Python's Ctrl-C sets): set, the
+  // call throws Cancelled on one thread and on several; clear, it answers.
+  rigid_sim::Scene scene = rigid_sim::box_on_plane();
+  std::vector<RigidBody> bodies;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    bodies.push_back(body_of(scene.bodies[b], scene.poses[0][b], scene.poses[1][b]));
+  for (const unsigned threads : {1u, 2u}) {
+    std::atomic<bool> flag{true};
+    SceneOptions o{threads, 0.0, 1.0};
+    o.cancel = &flag;
+    EXPECT_THROW(rigid_find_collisions(bodies, o), Cancelled) << threads;
+    EXPECT_THROW(rigid_earliest_toi(bodies, o), Cancelled) << threads;
+    EXPECT_THROW(rigid_max_collision_free_step(bodies, o), Cancelled) << threads;
+    flag = false;
+    EXPECT_EQ(rigid_find_collisions(bodies, o).size(), rigid_find_collisions(bodies, SceneOptions{threads, 0.0, 1.0}).size());
+  }
 }
 
 }  // namespace

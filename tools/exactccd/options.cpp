@@ -3,6 +3,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -108,6 +109,25 @@ std::string help_entry(const OptionSpec& o) {
   throw UsageError(c.name + ": " + o.name + " needs " + needs + ", not '" + value + "'");
 }
 
+/// `v` as a decimal or hexadecimal floating-point literal ("0x1p-40", "-0x1.8p1") that it reads
+/// as in full (the nearest double, as the data files' strtod), else nullopt.
+std::optional<double> parse_real(const std::string& v) {
+  double x = 0;
+  const char* first = v.data();
+  const char* last = v.data() + v.size();
+  const bool negative = !v.empty() && v[0] == '-';
+  const char* digits = first + (negative ? 1 : 0);
+  if (last - digits > 2 && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
+    if (digits[2] == '-' || digits[2] == '+') return std::nullopt;  // "0x-1": not a literal
+    const auto [end, error] = std::from_chars(digits + 2, last, x, std::chars_format::hex);
+    if (error != std::errc() || end != last) return std::nullopt;
+    return negative ? -x : x;
+  }
+  const auto [end, error] = std::from_chars(first, last, x);
+  if (v.empty() || error != std::errc() || end != last) return std::nullopt;
+  return x;
+}
+
 OptionValue parse_value(const CommandSpec& c, const OptionSpec& o, const std::string& v) {
   OptionValue out;
   out.text = v;
@@ -133,15 +153,11 @@ OptionValue parse_value(const CommandSpec& c, const OptionSpec& o, const std::st
       break;
     }
     case ValueType::real: {
-      double x = 0;
-      const char* last = v.data() + v.size();
-      const auto [end, error] = std::from_chars(v.data(), last, x);
+      const std::optional<double> x = parse_real(v);
       std::ostringstream range;
       range << "a finite number in [" << o.real_min << ", " << o.real_max << "]";
-      if (v.empty() || error != std::errc() || end != last || !std::isfinite(x) || x < o.real_min ||
-          x > o.real_max)
-        bad_value(c, o, range.str(), v);
-      out.real = x;
+      if (!x || !std::isfinite(*x) || *x < o.real_min || *x > o.real_max) bad_value(c, o, range.str(), v);
+      out.real = *x;
       break;
     }
     case ValueType::text:
