@@ -6,16 +6,20 @@
 //                        answers at once (counted `exact`);
 //   DirectionStage       a certified separating direction over the step (direction_stage.hpp,
 //                        `separating_direction`);
-//   IntervalStage        d = 0: the volume's roots (contact_walk.hpp); d > 0: for the answer
+//   IntervalStage        d = 0: the volume's roots (contact_walk.hpp), for edge-edge motion in a
+//                        plane the plane's candidates (coplanar_walk.hpp); d > 0: for the answer
 //                        alone the contact walk first (touching in [0, tmax] is being within d),
 //                        then the walk over the feature-pair terms (separation_walk.hpp); one
 //                        interval frame for both (`interval`, or `integer` when GMP was used);
 //   ExactStage           the exact path (exact_rigid.hpp, `exact`): always decides.
 #include "rigid/rigid_filter.hpp"
 
+#include <type_traits>
+
 #include "pipeline/outcome.hpp"
 #include "pipeline/run_stages.hpp"
 #include "rigid/contact_walk.hpp"
+#include "rigid/coplanar_walk.hpp"
 #include "rigid/direction_stage.hpp"
 #include "rigid/exact_rigid.hpp"
 #include "rigid/normalized.hpp"
@@ -27,6 +31,22 @@ namespace {
 using pipeline::Counter;
 using pipeline::Outcome;
 using pipeline::Work;
+
+/// The contact question on [0, tmax]: the volume's roots (contact_walk.hpp), then for edge-edge
+/// queries moving in planes orthogonal to an axis (the volume vanishes identically) the plane's
+/// candidates (coplanar_walk.hpp).
+template <class Query>
+StageResult contact_stage(const Query& q, const IntervalFrame<Query>& frame, double tmax, bool want_toi) {
+  StageResult r = contact_walk(q, frame, tmax, want_toi);
+  if constexpr (std::is_same_v<Query, RigidEdgeEdgeQuery>) {
+    if (!r.decided()) {
+      StageResult plane = coplanar_walk(q, tmax, want_toi);
+      plane.used_gmp = plane.used_gmp || r.used_gmp;
+      r = plane;
+    }
+  }
+  return r;
+}
 
 /// The exact path's answer to the Work's question as an Outcome.
 template <class Query>
@@ -74,11 +94,11 @@ struct IntervalStage {
       const CGAL::Protect_FPU_rounding<true> upward;  // the walks switch back where they need
       const IntervalFrame<Query> frame(q);
       if (d == 0) {
-        r = contact_walk(q, frame, tmax, want_toi);
+        r = contact_stage(q, frame, tmax, want_toi);
       } else {
         bool probe_used_gmp = false;
         if (!want_toi) {  // touching in [0, tmax] is being within d; its time bounds the earliest
-          const StageResult touch = contact_walk(q, frame, tmax, false);
+          const StageResult touch = contact_stage(q, frame, tmax, false);
           if (touch.answer == StageResult::Answer::collides)
             r = StageResult::collides({0.0, touch.toi->hi}, touch.used_gmp);
           probe_used_gmp = touch.used_gmp;

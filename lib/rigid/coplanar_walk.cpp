@@ -1,0 +1,120 @@
+#include "rigid/coplanar_walk.hpp"
+
+#include <boost/container/small_vector.hpp>
+
+#include <algorithm>
+#include <array>
+
+#include "contact/contact_rule.hpp"
+#include "filter/interval/isolation.hpp"  // IntervalSignOracle
+#include "rigid/bernstein.hpp"
+#include "rigid/rigid_frame.hpp"
+
+namespace exactccd::rigid {
+namespace {
+
+using I = CGAL::Interval_nt<false>;
+using IQuery = RigidEdgeEdgeQueryT<I>;
+using Orientation = contact::Poly<I, 10>;
+using Isolation = BernsteinIsolation<10>;
+
+IQuery to_intervals(const RigidEdgeEdgeQuery& q) {
+  const auto pose = [](const RigidPose& p) {
+    return RigidPoseT<I>{{I(p.c.x), I(p.c.y), I(p.c.z)}, {I(p.q.w), I(p.q.x), I(p.q.y), I(p.q.z)}};
+  };
+  const auto point = [](const Vec3& v) { return Vec3T<I>{I(v.x), I(v.y), I(v.z)}; };
+  return {pose(q.a_t0), pose(q.a_t1), pose(q.b_t0), pose(q.b_t1), point(q.a0), point(q.a1), point(q.b0), point(q.b1)};
+}
+
+template <int D>
+bool exactly_zero(const contact::Poly<I, D>& p) {
+  return std::all_of(p.c.begin(), p.c.end(), [](const I& c) { return c.inf() == 0 && c.sup() == 0; });
+}
+
+/// The coordinate k of the header's certificate, or -1.
+int plane_axis(const ScaledFrame<I>& f) {
+  for (int k = 0; k < 3; ++k) {
+    const auto coordinate = [&](int i) -> const contact::Poly<I, 5>& {
+      const auto& p = f.position[i];
+      return k == 0 ? p.x : k == 1 ? p.y : p.z;
+    };
+    bool same = true;
+    for (int i = 1; i < 4 && same; ++i) same = exactly_zero(coordinate(i) - coordinate(0));
+    if (same) return k;
+  }
+  return -1;
+}
+
+/// A candidate: its cell and what the rule said there.
+struct Candidate {
+  RootCell cell;
+  contact::Truth truth;
+};
+
+/// The rule at the root of `o` in `cell` (o counted as zero there), the cell halved by o's
+/// certain sign at its midpoint while the rule is uncertain (up to 40 times).
+template <class Terms>
+contact::Truth rule_at_root(const Terms& P, const Orientation* o, RootCell& cell) {
+  for (int attempt = 0;; ++attempt) {
+    const filter::interval::IntervalSignOracle oracle{I(cell.lo, cell.hi), o};
+    const contact::Truth t = contact::in_plane_contact(P, oracle);
+    if (t != contact::Truth::unknown || o == nullptr || cell.lo == cell.hi || attempt == 40) return t;
+    const double mid = cell.lo + (cell.hi - cell.lo) / 2;
+    if (!(cell.lo < mid && mid < cell.hi)) return t;
+    const I v = (*o)(I(mid));
+    if (v.inf() == 0 && v.sup() == 0)
+      cell = {mid, mid, 0};  // an exact zero: the root itself
+    else if (v.inf() > 0 || v.sup() < 0)
+      ((v.inf() > 0 ? 1 : -1) == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
+    else
+      return t;
+  }
+}
+
+}  // namespace
+
+StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_toi) {
+  const IQuery iq = to_intervals(q);
+  const ScaledFrame<I> frame = scaled_frame(iq);
+  const int k = plane_axis(frame);
+  if (k < 0) return StageResult::undecided();
+  const auto P = contact_terms<IQuery>(frame);
+  boost::container::small_vector<Candidate, 16> candidates;
+  RootCell start{0.0, 0.0, 0};
+  candidates.push_back({start, rule_at_root(P, nullptr, start)});
+  for (int i = 0; i < 4; ++i) {
+    const auto& cross = P.endpoint_on_edge(i).cross;
+    const Orientation& o = k == 0 ? cross.x : k == 1 ? cross.y : cross.z;
+    const Isolation::Coefficients b = Isolation::of(o);
+    const SignClass first = classify(b[0]), last = classify(b[10]);
+    boost::container::small_vector<RootCell, 8> cells;
+    if (first == SignClass::zero) cells.push_back({0.0, 0.0, 0});
+    if (!Isolation::isolate(b, 0.0, 1.0, 0, cells, first, last)) return StageResult::undecided();
+    if (last == SignClass::zero) cells.push_back({1.0, 1.0, 0});
+    for (RootCell cell : cells) {
+      if (cell.lo > tmax) break;  // later roots are later still
+      const contact::Truth t = rule_at_root(P, &o, cell);
+      candidates.push_back({cell, t});
+    }
+  }
+  // A collision: a candidate certainly in contact within [0, tmax]; the earliest such by lo.
+  const Candidate* contact_at = nullptr;
+  bool all_no = true;
+  for (const Candidate& c : candidates) {
+    if (c.cell.lo > tmax) continue;
+    all_no = all_no && c.truth == contact::Truth::no;
+    if (c.truth == contact::Truth::yes && c.cell.hi <= tmax && (!contact_at || c.cell.lo < contact_at->cell.lo))
+      contact_at = &c;
+  }
+  if (all_no) return StageResult::separate();  // the claim: no candidate, no contact
+  if (!contact_at) return StageResult::undecided();
+  const RootCell& cell = contact_at->cell;
+  if (!want_toi) return StageResult::collides({0.0, cell.hi});  // holds the earliest time, <= tmax
+  // The TOI: an exact point every candidate starting before certainly precedes without contact.
+  if (cell.lo != cell.hi) return StageResult::undecided();
+  for (const Candidate& c : candidates)
+    if (c.cell.lo < cell.lo && c.truth != contact::Truth::no) return StageResult::undecided();
+  return StageResult::collides({cell.lo, cell.lo});
+}
+
+}  // namespace exactccd::rigid
