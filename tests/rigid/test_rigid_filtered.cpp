@@ -78,6 +78,19 @@ void random_agreement(std::uint64_t seed, int count) {
 TEST(RigidFiltered, EqualsExactOnRandomQueriesVertexFace) { random_agreement<RigidVertexFaceQuery>(11, 160); }
 TEST(RigidFiltered, EqualsExactOnRandomQueriesEdgeEdge) { random_agreement<RigidEdgeEdgeQuery>(12, 160); }
 
+TEST(RigidFiltered, EqualsExactOnRandomEdgeEdgeMotionsInOnePlane) {
+  // Every point in z = 0 and every rotation about z (small integers: often exactly parallel,
+  // collinear, touching at dyadic times): the volume vanishes for all t and the plane's
+  // candidates decide (rigid/coplanar_walk.hpp) where they can; answers and TOIs as exact.
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int i = 0; i < 300; ++i) {
+    const RigidEdgeEdgeQuery q = random_query<RigidEdgeEdgeQuery>(rng, true);
+    agree(q, CcdParams{0, 1}, "planar " + std::to_string(i));
+    agree(q, CcdParams{0, i % 2 ? 0.5 : 0.125 + unit(rng) * 0.875}, "planar " + std::to_string(i));
+  }
+}
+
 /// Every seventh query of the bundled tumbling-body sets, at d = 0, and at d = 2^-9 with
 /// tmax 0.75 (the bodies have size about 1).
 TEST(RigidFiltered, EqualsExactOnTheTumblingBodies) {
