@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "contact/contact_rule.hpp"
 #include "filter/interval/isolation.hpp"  // IntervalSignOracle
 #include "rigid/bernstein.hpp"
 #include "rigid/rigid_frame.hpp"
+#include "rigid/sign_at.hpp"
 
 namespace exactccd::rigid {
 namespace {
@@ -45,11 +47,28 @@ int plane_axis(const ScaledFrame<I>& f) {
   return -1;
 }
 
-/// A candidate: its cell and what the rule said there.
+/// A candidate: its cell, what the rule said there and the endpoint whose orientation defines
+/// it (-1: t = 0).
 struct Candidate {
   RootCell cell;
   contact::Truth truth;
+  int endpoint;
 };
+
+/// The tightest double cell around the candidate's root: its orientation's exact signs at
+/// doubles (sign_at.hpp, in round-to-nearest), as contact_walk.cpp's narrowing of V's roots.
+RootCell tightest(const RigidEdgeEdgeQuery& q, const Candidate& candidate, int axis, bool& used_gmp) {
+  RootCell cell = candidate.cell;
+  const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+  while (cell.lo < cell.hi && std::nextafter(cell.lo, 2.0) < cell.hi) {
+    double mid = cell.lo + (cell.hi - cell.lo) / 2;
+    if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, 2.0);
+    const int s = orientation_sign_at(q, candidate.endpoint, axis, mid, used_gmp);
+    if (s == 0) return {mid, mid, 0};
+    (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
+  }
+  return cell;
+}
 
 /// The rule at the root of `o` in `cell` (o counted as zero there), the cell halved by o's
 /// certain sign at its midpoint while the rule is uncertain (up to 40 times).
@@ -81,7 +100,7 @@ StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_to
   const auto P = contact_terms<IQuery>(frame);
   boost::container::small_vector<Candidate, 16> candidates;
   RootCell start{0.0, 0.0, 0};
-  candidates.push_back({start, rule_at_root(P, nullptr, start)});
+  candidates.push_back({start, rule_at_root(P, nullptr, start), -1});
   for (int i = 0; i < 4; ++i) {
     const auto& cross = P.endpoint_on_edge(i).cross;
     const Orientation& o = k == 0 ? cross.x : k == 1 ? cross.y : cross.z;
@@ -94,27 +113,39 @@ StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_to
     for (RootCell cell : cells) {
       if (cell.lo > tmax) break;  // later roots are later still
       const contact::Truth t = rule_at_root(P, &o, cell);
-      candidates.push_back({cell, t});
+      candidates.push_back({cell, t, i});
     }
   }
   // A collision: a candidate certainly in contact within [0, tmax]; the earliest such by lo.
   const Candidate* contact_at = nullptr;
   bool all_no = true;
   for (const Candidate& c : candidates) {
-    if (c.cell.lo > tmax) continue;
     all_no = all_no && c.truth == contact::Truth::no;
     if (c.truth == contact::Truth::yes && c.cell.hi <= tmax && (!contact_at || c.cell.lo < contact_at->cell.lo))
       contact_at = &c;
   }
   if (all_no) return StageResult::separate();  // the claim: no candidate, no contact
-  if (!contact_at) return StageResult::undecided();
-  const RootCell& cell = contact_at->cell;
-  if (!want_toi) return StageResult::collides({0.0, cell.hi});  // holds the earliest time, <= tmax
-  // The TOI: an exact point every candidate starting before certainly precedes without contact.
-  if (cell.lo != cell.hi) return StageResult::undecided();
-  for (const Candidate& c : candidates)
-    if (c.cell.lo < cell.lo && c.truth != contact::Truth::no) return StageResult::undecided();
-  return StageResult::collides({cell.lo, cell.lo});
+  if (!want_toi && contact_at) return StageResult::collides({0.0, contact_at->cell.hi});  // holds the earliest time
+  // The earliest contact: each candidate not certainly out of contact narrowed to the tightest
+  // double interval around its root (its orientation's exact signs); the one certainly in
+  // contact that starts first, when every other such candidate starts at or after its end (its
+  // root is then no earlier).
+  bool used_gmp = false;
+  boost::container::small_vector<Candidate, 16> open;
+  for (const Candidate& c : candidates) {
+    if (c.truth == contact::Truth::no) continue;
+    open.push_back(c);
+    if (c.endpoint >= 0) open.back().cell = tightest(q, c, k, used_gmp);
+  }
+  const Candidate* first = nullptr;
+  for (const Candidate& c : open)
+    if (c.truth == contact::Truth::yes && (!first || c.cell.lo < first->cell.lo)) first = &c;
+  if (!first) return StageResult::undecided(used_gmp);
+  for (const Candidate& c : open)
+    if (&c != first && c.cell.lo < first->cell.hi) return StageResult::undecided(used_gmp);
+  const TimeInterval toi{first->cell.lo, first->cell.hi};
+  if (toi.lo == toi.hi ? toi.lo > tmax : toi.hi > tmax) return StageResult::separate(used_gmp);
+  return StageResult::collides(toi, used_gmp);
 }
 
 }  // namespace exactccd::rigid

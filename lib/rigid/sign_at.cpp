@@ -47,6 +47,14 @@ int volume_sign(const Query& q, const A& arithmetic) {
   return sign_of(value_terms<Query>(at.point).volume());
 }
 
+template <class Query, class A>
+int orientation_sign(const Query& q, int endpoint, int axis, const A& arithmetic) {
+  const auto at = positions_at(q, arithmetic);
+  const auto terms = value_terms<Query>(at.point);
+  const auto& c = terms.endpoint_on_edge(endpoint).cross;
+  return sign_of(axis == 0 ? c.x : axis == 1 ? c.y : c.z);
+}
+
 /// Feature f's distance at the positions `at` with d D(t) for d.
 template <class R>
 R distance_value(const kinds::Feature& f, const PositionsAt<R>& at, const R& d) {
@@ -63,6 +71,13 @@ int volume_sign_of(const Query& q, double t, bool& used_gmp) {
   if (const int s = volume_sign(q, ApproxArithmetic{t}); s != 0) return s;
   used_gmp = true;
   return volume_sign(q, RationalArithmetic{mpq_class(t)});
+}
+
+template <class Query>
+int orientation_sign_of(const Query& q, int endpoint, int axis, double t, bool& used_gmp) {
+  if (const int s = orientation_sign(q, endpoint, axis, ApproxArithmetic{t}); s != 0) return s;
+  used_gmp = true;
+  return orientation_sign(q, endpoint, axis, RationalArithmetic{mpq_class(t)});
 }
 
 template <class Query>
@@ -84,6 +99,9 @@ int distance_sign_of(const Query& q, const kinds::Feature& f, double d, double t
 
 int volume_sign_at(const RigidVertexFaceQuery& q, double t, bool& used_gmp) { return volume_sign_of(q, t, used_gmp); }
 int volume_sign_at(const RigidEdgeEdgeQuery& q, double t, bool& used_gmp) { return volume_sign_of(q, t, used_gmp); }
+int orientation_sign_at(const RigidEdgeEdgeQuery& q, int endpoint, int axis, double t, bool& used_gmp) {
+  return orientation_sign_of(q, endpoint, axis, t, used_gmp);
+}
 int distance_sign_at(const RigidVertexFaceQuery& q, const kinds::Feature& f, double d, double t, bool& used_gmp,
                      double* approximation) {
   return distance_sign_of(q, f, d, t, used_gmp, approximation);

@@ -28,6 +28,11 @@ int volume_sign_at(const RigidVertexFaceQuery& normalized_query, double t, bool&
 /// See volume_sign_at(const RigidVertexFaceQuery&, double, bool&).
 int volume_sign_at(const RigidEdgeEdgeQuery& normalized_query, double t, bool& used_gmp);
 
+/// The sign of component `axis` of the contact rule's cross for endpoint `endpoint` (0..3: a0,
+/// a1, b0, b1) against the other edge (contact_polynomials.hpp, endpoint_on_edge) at the double t,
+/// exactly (as volume_sign_at). Degree 2 in the positions: below 2^26, far from overflow.
+int orientation_sign_at(const RigidEdgeEdgeQuery& normalized_query, int endpoint, int axis, double t, bool& used_gmp);
+
 /// The sign of feature f's distance polynomial (separation_terms.hpp) with minimum distance d at
 /// the double t, exactly (as volume_sign_at). `approximation`, when given, receives an
 /// approximation of its value times a positive factor (for root estimates; 0 when GMP decided).

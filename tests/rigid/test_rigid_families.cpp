@@ -47,9 +47,10 @@ TEST(RigidFamilies, EveryMethodGivesTheConstructedAnswerAndToi) {
 
 TEST(RigidFamilies, MotionInOnePlaneIsAnsweredWithoutTheExactPath) {
   // The edge-edge family "motion in one plane" (the volume vanishes for all t): the filtered
-  // method's answer comes from the plane's candidates (rigid/coplanar_walk.hpp), not from the
-  // exact path, and is the constructed one; the TOI (asked separately) still equals the
-  // construction's whichever stage gives it. Before coplanar_walk every instance went exact.
+  // method's answer and its TOI (asked separately) come from the plane's candidates
+  // (rigid/coplanar_walk.hpp), not from the exact path, and are the constructed ones (the TOI
+  // narrowed by exact signs at doubles: double-double, GMP at an exact root such as 1/2).
+  // Before coplanar_walk every instance went exact.
   std::mt19937_64 rng(2024);
   int checked = 0;
   for (const rigid_families::Family& family : rigid_families::all_families()) {
@@ -66,9 +67,11 @@ TEST(RigidFamilies, MotionInOnePlaneIsAnsweredWithoutTheExactPath) {
           EXPECT_EQ(rigid_edge_edge_ccd(q, CcdParams{}, Method::filtered, counters), *inst.expected) << what;
           EXPECT_EQ(counters.exact, 0u) << what;
           EXPECT_EQ(counters.interval, 1u) << what;
-          const auto t = rigid_edge_edge_toi(q, CcdParams{}, Method::filtered);
+          StageCounters toi_counters;
+          const auto t = rigid_edge_edge_toi(q, CcdParams{}, Method::filtered, toi_counters);
           ASSERT_TRUE(t.has_value()) << what;
           EXPECT_TRUE(families::is_tightest_enclosure(*inst.toi, *t)) << what;
+          EXPECT_EQ(toi_counters.exact, 0u) << what;
           ++checked;
         }
       }
