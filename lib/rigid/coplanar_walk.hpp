@@ -25,12 +25,15 @@
 // listed); the rule is evaluated at t = 0 and at each root cell with signs certified over the
 // cell, the defining o_i counted as zero (filter/interval's IntervalSignOracle: the other signs
 // certain over the cell are their signs at the root), the cell halved by o_i's certain sign at
-// its midpoint while the rule is uncertain. Then, over [0, tmax]: a candidate certainly in
-// contact whose cell lies in [0, tmax] is a collision (without want_toi, any enclosure of the
-// earliest time is asked for: [0, that cell's hi]); every candidate certainly not in
-// contact is no collision (the claim); the TOI only when the earliest contact is at an exact
-// double (a point cell) that every candidate cell starting before it certainly precedes without
-// contact. Anything else: undecided (the exact path).
+// its midpoint while the rule is uncertain. Then, over [0, tmax]: every candidate certainly not
+// in contact is no collision (the claim); without want_toi, a candidate certainly in contact
+// whose cell lies in [0, tmax] is a collision (any enclosure of the earliest time is asked for:
+// [0, that cell's hi]). Otherwise each candidate not certainly out of contact is narrowed to
+// the tightest double cell around its root by its orientation's exact signs at doubles
+// (sign_at.hpp: double-double, else GMP rationals); the candidate certainly in contact that
+// starts first is the earliest contact when every other such candidate starts at or after its
+// end (its root is then no earlier): its cell is the TOI, a collision iff within tmax.
+// Anything else: undecided (the exact path).
 #pragma once
 
 #include "exactccd/rigid.hpp"
