@@ -16,8 +16,11 @@ exe=build/exactccd
 # edge-edge only; data/kinds holds point-edge, point-point and the 2D kinds).
 textbook_files=(data/catalogue/*.csv data/families/*.csv data/sim/*.csv)
 
-echo "== the oracle on the bundled data: exactccd check --stats data/*/*.csv"
-"$exe" check --stats data/*/*.csv
+# Linear-motion query files (data/rigid holds rigid-body queries, another format: below).
+linear_files=(data/catalogue/*.csv data/families/*.csv data/sim/*.csv data/kinds/*.csv)
+
+echo "== the oracle on the bundled data: exactccd check --stats data/{catalogue,families,sim,kinds}/*.csv"
+"$exe" check --stats "${linear_files[@]}"
 sample=../shared/data/sample-queries/unit-tests
 if [ -d "$sample" ]; then
   echo
@@ -40,6 +43,11 @@ echo "== their times of impact, the tightest double interval [lo, hi] of the exa
 echo "   exactccd check --min-distance 1e-3 --toi --answers data/sim/sim-cloth-vertex-face.csv"
 "$exe" check --min-distance 1e-3 --toi --answers data/sim/sim-cloth-vertex-face.csv > build/demo-toi.txt
 grep -m 3 '^1 ' build/demo-toi.txt
+echo
+echo "== rigid bodies (rotation and translation over the step), exact too:"
+echo "   exactccd check --motion rigid --kind vf --stats data/rigid/*-vertex-face.csv (and --kind ee)"
+"$exe" check --motion rigid --kind vf --stats data/rigid/*-vertex-face.csv
+"$exe" check --motion rigid --kind ee --stats data/rigid/*-edge-edge.csv
 echo
 echo "== one scene step: exactccd scene data/scenes/cloth/T0.obj data/scenes/cloth/T1.obj (first lines)"
 "$exe" scene data/scenes/cloth/T0.obj data/scenes/cloth/T1.obj > build/demo-scene.txt

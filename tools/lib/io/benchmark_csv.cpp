@@ -77,6 +77,10 @@ BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_
     ++line_number;
     if (trim(line).empty()) continue;
     last_row_line = line_number;
+    if (trim(line)[0] == '#')  // the rigid query files' comment lines: say which command reads them
+      throw ParseError(source_name, line_number,
+                       "a '#' comment line: benchmark query files have none (rigid query files do: "
+                       "exactccd check --motion rigid --kind vf|ee FILE.csv)");
     std::vector<std::string> fields;
     std::stringstream ss(line);
     for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
