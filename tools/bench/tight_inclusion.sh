@@ -18,7 +18,7 @@ fi
 ti_source=$(sed -n 's/^TightInclusion_SOURCE_DIR:STATIC=//p' "$ti_build/CMakeCache.txt")
 [ -f "$ti_source/src/tight_inclusion/config.hpp" ] || { echo "no configured Tight Inclusion source at '$ti_source'"; exit 1; }
 [ -f build/libexactccd.a ] && [ -f build/libexactccd_tools.a ] || { echo "build exactccd into build/ first"; exit 1; }
-c++ -std=c++17 -O3 -DNDEBUG -ffp-contract=off -Iinclude -Ilib -Ibuild/include -I"$ti_source/src" -I/usr/include/eigen3 \
+c++ -std=c++17 -O3 -DNDEBUG -ffp-contract=off -Iinclude -Ilib -Itools/lib -Ibuild/include -I"$ti_source/src" -I/usr/include/eigen3 \
     tools/bench/tight_inclusion_bench.cpp build/libexactccd_tools.a build/libexactccd.a "$library" \
     -lmpfi -lmpfr -lgmpxx -lgmp -lspdlog -lfmt -pthread -o build/tight_inclusion_bench
 files() { ls "$@" | paste -sd, -; }

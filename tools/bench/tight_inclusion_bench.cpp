@@ -27,7 +27,7 @@
 
 #include "exactccd/ccd.hpp"
 #include "io/benchmark_csv.hpp"
-#include "tools/methods.hpp"
+#include "methods/methods.hpp"
 
 namespace {
 
