@@ -140,14 +140,7 @@ int run_check(int argc, char** argv) {
       t.fn += !r && d.queries.truth[i];
     }
     if (answers) {
-      for (const auto& r : result) {
-        if (!r)
-          std::fputs("0\n", stdout);
-        else if (want_toi)
-          std::printf("1 %.17g %.17g\n", r->lo, r->hi);  // 17 digits: read back as the same doubles
-        else
-          std::fputs("1\n", stdout);
-      }
+      print_answers(result, want_toi);
     } else if (json) {
       char buf[4096];
       std::snprintf(buf, sizeof buf,

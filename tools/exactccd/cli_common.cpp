@@ -211,6 +211,17 @@ std::optional<TimeInterval> collides_placeholder(bool collides) {
 
 }  // namespace
 
+void print_answers(const std::vector<std::optional<TimeInterval>>& answers, bool want_toi) {
+  for (const auto& r : answers) {
+    if (!r)
+      std::fputs("0\n", stdout);
+    else if (want_toi)
+      std::printf("1 %.17g %.17g\n", r->lo, r->hi);
+    else
+      std::fputs("1\n", stdout);
+  }
+}
+
 std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Method method,
                                       StageCounters* counters, bool want_toi, const CcdParams& params) {
   return visit_kind(d.kind, [&](auto kind) -> std::optional<TimeInterval> {

@@ -152,6 +152,10 @@ Dataset load_dataset(const std::string& path, std::optional<QueryKind> kind, con
 /// the query; the exact methods can). No-op for the exact methods.
 void require_double_range(const Dataset& d, tools::Method method);
 
+/// Prints `check --answers`' lines for `answers`: "0" for no collision, "1" with want_toi
+/// "1 LO HI" (17 significant digits: read back as the same doubles).
+void print_answers(const std::vector<std::optional<TimeInterval>>& answers, bool want_toi);
+
 /// The answer of one method on query i: the TOI when it collides. Rational queries that are
 /// not exact doubles run the exact path (the baselines round them to the nearest doubles).
 /// `params`: the minimum separation and time limit (only the exact methods answer other
