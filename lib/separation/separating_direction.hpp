@@ -39,7 +39,9 @@
 //     computed value), so d |n| <= fl(d' r) (1 + 2^-49) + 2^-1070. Hence gap > d |n| when
 //     g > (1 + e) (2E + fl(d' r) (1 + 2^-49) + 2^-1070), which the computed
 //     T = fl(fl(fl(2E + fl(d' r)) + 2^-1060) (1 + 2^-47)) is at least (three roundings cost
-//     at most 3e, and 2^-47 - 3e > 2^-52 + 2^-49 + 2^-100). The test is g > T; a T made infinite or
+//     at most 3e, and 2^-47 - 3e > 2^-52 + 2^-49 + 2^-100). The test is g > T (decided first
+//     against T at r = 1 and at r = 2, which bound it: ProjectionFrame's threshold_at_least and
+//     threshold_at_most; the square root only when g falls between them); a T made infinite or
 //     huge by d' (overflowed) never certifies, and nothing else is near overflow (every |y| and
 //     every difference of rows below 2^402, a natural direction's components below 2^806
 //     before it is normalised (point-edge: r x e is normalised before the second cross
@@ -81,7 +83,13 @@ struct ProjectionFrame {
   double d = 0;      ///< d 2^s (possibly infinite)
   double error = 0;  ///< E: bounds |computed n.y - exact n.(row)| for a normalised n
   double extent = 0;  ///< Y: the largest |y| at t0 and t1
+  /// The threshold T of step 4 for |n| taken as 1 and as 2: T of any normalised direction
+  /// lies between them (set_threshold_bounds), so most gaps are decided without a square root.
+  double threshold_at_least = 0, threshold_at_most = 0;
   bool usable = false;
+
+  /// T of step 4 for the computed length r of the normalised direction.
+  double threshold_for_length(double r) const { return ((2 * error + d * r) + 0x1p-1060) * (1 + 0x1p-47); }
 
   /// The frame of rows `x` (finite doubles) and the minimum distance d >= 0 (finite).
   ProjectionFrame(const std::array<Vec3, N>& x, double min_distance) {
@@ -103,6 +111,7 @@ struct ProjectionFrame {
     for (const Vec3& p : y) extent = std::max(extent, std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
     this->extent = extent;
     error = extent * 0x1p-48 + 0x1p-1060;
+    set_threshold_bounds();
     usable = true;
   }
 
@@ -123,7 +132,20 @@ struct ProjectionFrame {
       r.y[i + P] = {y0.x + b * delta.x, y0.y + b * delta.y, y0.z + b * delta.z};
     }
     r.error = extent * 0x1p-46 + 0x1p-1060;
+    r.set_threshold_bounds();
     return r;
+  }
+
+ private:
+  /// For a direction n normalised as in step 2 (one component exactly +-1, the others in
+  /// [-1, 1]), r = fl(sqrt(fl(fl(n_x n_x + n_y n_y) + n_z n_z))) lies in [1, 2]: the exact sum
+  /// is in [1, 3], and rounding (in any mode) is monotone and keeps 1 and 3, so the computed
+  /// sum is in [1, 3] and its rounded square root in [1, 2]. T is d r and E combined by
+  /// roundings of sums and products of nonnegative numbers, each monotone nondecreasing in r,
+  /// so T(1) <= T(r) <= T(2) (also when d is infinite: all three are infinite).
+  void set_threshold_bounds() {
+    threshold_at_least = threshold_for_length(1.0);
+    threshold_at_most = threshold_for_length(2.0);
   }
 };
 
@@ -147,10 +169,17 @@ struct SideRows {
 /// between projections above it certifies an exact gap above d |n|.
 template <std::size_t N>
 double gap_threshold(const ProjectionFrame<N>& frame, const Vec3& n) {
-  // d = 0 (contact): d |n| is 0 whatever n, and the square root is not needed (the same value:
-  // r is finite for a normalised n, and 0 r = 0).
-  const double r = frame.d == 0 ? 0.0 : std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
-  return ((2 * frame.error + frame.d * r) + 0x1p-1060) * (1 + 0x1p-47);
+  return frame.threshold_for_length(std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z));
+}
+
+/// g > T(n) for the normalised direction n: the same test as g > gap_threshold(frame, n),
+/// decided by the frame's bounds on T (ProjectionFrame::set_threshold_bounds) unless g falls
+/// between them (at d = 0 the bounds are equal: never).
+template <std::size_t N>
+bool gap_exceeds_threshold(const ProjectionFrame<N>& frame, const Vec3& n, double g) {
+  if (!(g > frame.threshold_at_least)) return false;
+  if (g > frame.threshold_at_most) return true;
+  return g > gap_threshold(frame, n);
 }
 
 /// The gap along the normalised direction n certifies the separation (header, step 4): the
@@ -169,8 +198,8 @@ bool gap_certified(const ProjectionFrame<N>& frame, const SideRows<N>& rows, con
   double a_lo, a_hi, b_lo, b_hi;
   extent(rows.first, rows.firsts, a_lo, a_hi);
   extent(rows.second, rows.seconds, b_lo, b_hi);
-  const double threshold = gap_threshold(frame, n);
-  return b_lo - a_hi > threshold || a_lo - b_hi > threshold;
+  // Either set below the other (no projection is NaN: every |p| < 2^404, header step 4).
+  return gap_exceeds_threshold(frame, n, std::max(b_lo - a_hi, a_lo - b_hi));
 }
 
 /// As gap_certified, but the rows at t0 and those at t1 compared separately, the same set
@@ -204,9 +233,10 @@ bool gap_certified_at_each_end(const ProjectionFrame<N>& frame, const SideRows<N
     b_lo[end] = std::min(b_lo[end], p);
     b_hi[end] = std::max(b_hi[end], p);
   }
-  const double threshold = gap_threshold(frame, n);
-  return (b_lo[0] - a_hi[0] > threshold && b_lo[1] - a_hi[1] > threshold) ||
-         (a_lo[0] - b_hi[0] > threshold && a_lo[1] - b_hi[1] > threshold);
+  // The same set below the other at both ends (no projection is NaN, as in gap_certified).
+  const double first_below = std::min(b_lo[0] - a_hi[0], b_lo[1] - a_hi[1]);
+  const double second_below = std::min(a_lo[0] - b_hi[0], a_lo[1] - b_hi[1]);
+  return gap_exceeds_threshold(frame, n, std::max(first_below, second_below));
 }
 
 /// n divided by its largest component magnitude (header, step 2), or nothing for a direction
