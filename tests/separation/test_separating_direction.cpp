@@ -9,6 +9,7 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cfenv>
 #include <cmath>
@@ -211,6 +212,47 @@ TEST_P(RoundingMode, PointEdgeNearMissCertifiedAtEveryScale) {
     EXPECT_TRUE(in_mode([&] { return separation::primitives_separated<kinds::PointEdge>(ProjectionFrame<6>(x, u / 256)); }))
         << "scale 2^" << k;
   }
+}
+
+// The gap test decided against the threshold's bounds (T at |n| = 1 and 2, precomputed per
+// frame) is the test against T itself, for normalised directions whose length ranges over
+// [1, sqrt 3] and gaps at, just around and between the bounds, at every scale, d from 0 to far
+// above the coordinates, and both error bounds (a frame and its cells, ProjectionFrame::over).
+TEST_P(RoundingMode, ThresholdBoundsDecideAsTheThreshold) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> component(-1.0, 1.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  int between = 0;
+  for (const int k : {-1074, -1030, -500, -20, 0, 30, 500, 1000}) {
+    for (const double d_scale : {0.0, 0x1p-60, 0x1p-8, 1.0, 0x1p+1000}) {
+      std::array<Vec3, 8> x;
+      for (Vec3& p : x) p = {std::ldexp(component(rng), k), std::ldexp(component(rng), k), std::ldexp(component(rng), k)};
+      const double d = std::min(std::ldexp(d_scale, k), std::numeric_limits<double>::max());
+      const auto whole = in_mode([&] { return ProjectionFrame<8>(x, d); });
+      ASSERT_TRUE(whole.usable);
+      for (const auto& frame : {whole, in_mode([&] { return whole.over(0.25, 0.75); })}) {
+        for (int trial = 0; trial < 200; ++trial) {
+          // One component exactly +-1, the others in [-1, 1]; every fourth trial at the extremes.
+          std::array<double, 3> c{component(rng), component(rng), component(rng)};
+          if (trial % 4 == 1) c = {1.0, -1.0, 1.0};
+          if (trial % 4 == 2) c = {0x1p-1074, -0.0, 1e-300};
+          c[static_cast<std::size_t>(trial) % 3] = trial % 2 ? 1.0 : -1.0;
+          const Vec3 n{c[0], c[1], c[2]};
+          const double t = in_mode([&] { return separation::gap_threshold(frame, n); });
+          EXPECT_LE(frame.threshold_at_least, t);
+          EXPECT_LE(t, frame.threshold_at_most);
+          const double mid = frame.threshold_at_least + (frame.threshold_at_most - frame.threshold_at_least) / 2;
+          for (const double g : {t, std::nextafter(t, inf), std::nextafter(t, -inf), frame.threshold_at_least,
+                                 frame.threshold_at_most, std::nextafter(frame.threshold_at_most, inf), mid, -t, 0.0}) {
+            between += g > frame.threshold_at_least && !(g > frame.threshold_at_most);
+            EXPECT_EQ(in_mode([&] { return separation::gap_exceeds_threshold(frame, n, g); }), g > t)
+                << "k " << k << " d " << d << " n " << n.x << " " << n.y << " " << n.z << " g " << g;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(between, 0);  // the square root's band was exercised
 }
 
 INSTANTIATE_TEST_SUITE_P(SeparatingDirection, RoundingMode,
