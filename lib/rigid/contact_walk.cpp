@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "contact/contact_rule.hpp"
-#include "rigid/bernstein.hpp"
 #include "rigid/interval_frame.hpp"
+#include "rigid/isolation.hpp"
 #include "rigid/positions.hpp"
 #include "rigid/sign_at.hpp"
 
@@ -14,8 +14,6 @@ namespace exactccd::rigid {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-SignClass sign_class(int s) { return s > 0 ? SignClass::positive : s < 0 ? SignClass::negative : SignClass::zero; }
 
 /// The sign oracle over a cell: certain interval signs, an exact [0, 0] as 0, else unknown.
 int oracle_sign(const Interval& x) {
@@ -85,15 +83,10 @@ template <class Query>
 StageResult walk(const Query& q, const IntervalFrame<Query>& frame, double tmax, bool want_toi) {
   const bool narrow = want_toi || tmax < 1;
   ContactWalk<Query> w(q, frame);
-  using Isolation = BernsteinIsolation<5>;
-  const Isolation::Coefficients b = Isolation::of(frame.volume().p);
-  SignClass first = classify(b[0]), last = classify(b[5]);
-  if (first == SignClass::unknown) first = sign_class(w.sign_at(0.0));
-  if (last == SignClass::unknown) last = sign_class(w.sign_at(1.0));
-  boost::container::small_vector<RootCell, 8> cells;
-  if (first == SignClass::zero) cells.push_back({0.0, 0.0, 0});
-  if (!Isolation::isolate(b, 0.0, 1.0, 0, cells, first, last)) return StageResult::undecided(w.used_gmp());
-  if (last == SignClass::zero) cells.push_back({1.0, 1.0, 0});
+  RootCells cells;  // V's roots, the exact sign of V at an end where its interval is uncertain
+  const auto exact_sign_at_end = [&](int end) { return sign_class(w.sign_at(end == 0 ? 0.0 : 1.0)); };
+  if (numeric::isolate_roots<5>(frame.volume().p.c, cells, true, kIsolationLimits, exact_sign_at_end) == Isolation::failed)
+    return StageResult::undecided(w.used_gmp());
   for (RootCell cell : cells) {
     if (cell.lo > tmax) break;  // later roots are later still
     const contact::Truth t = w.rule_at_root(cell);

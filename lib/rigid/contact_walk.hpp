@@ -2,10 +2,10 @@
 // normalized query (normalized.hpp), in interval arithmetic (interval_frame.hpp):
 //  1. the volume polynomial V (degree 5, V's sign on [0, 1]) in the Bernstein basis; where its
 //     value at t = 0 or 1 is uncertain, its exact sign there (sign_at.hpp);
-//  2. its roots in [0, 1] isolated by Descartes' rule (bernstein.hpp): cells holding exactly one
-//     simple root, and exact zeros at dyadic points; a cell that cannot be settled (a multiple
-//     root: a tangential contact; V identically zero: motion in one plane) leaves the query to
-//     the exact path;
+//  2. its roots in [0, 1] isolated by Descartes' rule (numeric/bernstein_isolation.hpp): cells
+//     holding exactly one simple root, and exact zeros at dyadic points; a cell that cannot be
+//     settled (a multiple root: a tangential contact; V identically zero: motion in one plane)
+//     leaves the query to the exact path;
 //  3. by section 9.3 (the candidates are V's roots), the earliest contact is the first root at
 //     which the in-plane rule holds: at each root cell in time order the rule is evaluated on
 //     the positions' enclosures over the cell (the terms' signs certain over the cell are their

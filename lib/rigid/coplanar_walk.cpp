@@ -8,7 +8,7 @@
 
 #include "contact/contact_rule.hpp"
 #include "filter/interval/isolation.hpp"  // IntervalSignOracle
-#include "rigid/bernstein.hpp"
+#include "rigid/isolation.hpp"
 #include "rigid/rigid_frame.hpp"
 #include "rigid/sign_at.hpp"
 
@@ -18,7 +18,7 @@ namespace {
 using I = CGAL::Interval_nt<false>;
 using IQuery = RigidEdgeEdgeQueryT<I>;
 using Orientation = contact::Poly<I, 10>;
-using Isolation = BernsteinIsolation<10>;
+using filter::interval::exactly_zero;
 
 IQuery to_intervals(const RigidEdgeEdgeQuery& q) {
   const auto pose = [](const RigidPose& p) {
@@ -26,11 +26,6 @@ IQuery to_intervals(const RigidEdgeEdgeQuery& q) {
   };
   const auto point = [](const Vec3& v) { return Vec3T<I>{I(v.x), I(v.y), I(v.z)}; };
   return {pose(q.a_t0), pose(q.a_t1), pose(q.b_t0), pose(q.b_t1), point(q.a0), point(q.a1), point(q.b0), point(q.b1)};
-}
-
-template <int D>
-bool exactly_zero(const contact::Poly<I, D>& p) {
-  return std::all_of(p.c.begin(), p.c.end(), [](const I& c) { return c.inf() == 0 && c.sup() == 0; });
 }
 
 /// The coordinate k of the header's certificate, or -1.
@@ -104,12 +99,10 @@ StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_to
   for (int i = 0; i < 4; ++i) {
     const auto& cross = P.endpoint_on_edge(i).cross;
     const Orientation& o = k == 0 ? cross.x : k == 1 ? cross.y : cross.z;
-    const Isolation::Coefficients b = Isolation::of(o);
-    const SignClass first = classify(b[0]), last = classify(b[10]);
-    boost::container::small_vector<RootCell, 8> cells;
-    if (first == SignClass::zero) cells.push_back({0.0, 0.0, 0});
-    if (!Isolation::isolate(b, 0.0, 1.0, 0, cells, first, last)) return StageResult::undecided();
-    if (last == SignClass::zero) cells.push_back({1.0, 1.0, 0});
+    RootCells cells;
+    const auto no_exact_sign = [](int) { return SignClass::unknown; };
+    if (numeric::isolate_roots<10>(o.c, cells, true, kIsolationLimits, no_exact_sign) == Isolation::failed)
+      return StageResult::undecided();
     for (RootCell cell : cells) {
       if (cell.lo > tmax) break;  // later roots are later still
       const contact::Truth t = rule_at_root(P, &o, cell);
