@@ -36,6 +36,7 @@
 #include "kinds/primitive_kinds.hpp"
 #include "scene/parallel.hpp"
 #include "arrays.hpp"
+#include "batch.hpp"
 #include "interruptible.hpp"
 
 namespace py = pybind11;
@@ -266,33 +267,13 @@ struct Batch {
   static py::array_t<bool> ccd(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params, false);
-    const unsigned workers = to_threads(threads);
-    const std::size_t n = static_cast<std::size_t>(a.shape(0));
-    py::array_t<bool> out(static_cast<py::ssize_t>(n));
-    bool* o = out.mutable_data();
-    const double* in = a.data();
-    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(query(in + i * stride), params);
-    });
-    return out;
+    return batch_ccd(a, stride, params, to_threads(threads), query);
   }
 
   static py::array_t<double> toi(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params, true);
-    const unsigned workers = to_threads(threads);
-    const std::size_t n = static_cast<std::size_t>(a.shape(0));
-    auto out = shaped<py::array_t<double>>({static_cast<py::ssize_t>(n), 2});
-    double* o = out.mutable_data();
-    const double* in = a.data();
-    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        const std::optional<TimeInterval> t = exactccd::toi(query(in + i * stride), params);
-        o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
-        o[2 * i + 1] = t ? t->hi : std::numeric_limits<double>::quiet_NaN();
-      }
-    });
-    return out;
+    return batch_toi(a, stride, params, to_threads(threads), query);
   }
 
   static void define(py::module_& m) {

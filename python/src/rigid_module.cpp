@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "batch.hpp"
 #include "interruptible.hpp"
 #include "exactccd/rigid.hpp"
 #include "rigid/rigid_layout.hpp"
@@ -53,36 +54,18 @@ struct RigidBatch {
     return a;
   }
 
+  static Query query(const double* numbers) { return rigid::from_numbers<Query>(numbers); }
+
   static py::array_t<bool> ccd(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params);
-    const unsigned workers = to_threads(threads);
-    const std::size_t n = static_cast<std::size_t>(a.shape(0));
-    py::array_t<bool> out(static_cast<py::ssize_t>(n));
-    bool* o = out.mutable_data();
-    const double* in = a.data();
-    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) o[i] = exactccd::ccd(rigid::from_numbers<Query>(in + i * stride), params);
-    });
-    return out;
+    return batch_ccd(a, stride, params, to_threads(threads), query);
   }
 
   static py::array_t<double> toi(const py::handle& obj, double min_distance, double tmax, long long threads) {
     const CcdParams params{min_distance, tmax};
     const DoubleArray a = prepare(obj, params);
-    const unsigned workers = to_threads(threads);
-    const std::size_t n = static_cast<std::size_t>(a.shape(0));
-    py::array_t<double> out(py::array::ShapeContainer({static_cast<py::ssize_t>(n), py::ssize_t{2}}));
-    double* o = out.mutable_data();
-    const double* in = a.data();
-    run_batch(n, workers, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        const auto t = exactccd::toi(rigid::from_numbers<Query>(in + i * stride), params);
-        o[2 * i] = t ? t->lo : std::numeric_limits<double>::quiet_NaN();
-        o[2 * i + 1] = t ? t->hi : std::numeric_limits<double>::quiet_NaN();
-      }
-    });
-    return out;
+    return batch_toi(a, stride, params, to_threads(threads), query);
   }
 };
 
