@@ -38,29 +38,30 @@ namespace exactccd::scene {
 /// [0, n). Queries are const and thread-safe; build() and refit() are not (one writer).
 class BoxTree {
  public:
-  /// Primitives per leaf.
-  static constexpr int kLeafSize = 8;
+  /// Primitives per leaf: 16 (four SSE2 registers per bound) measured faster than 8 (fewer node
+  /// pairs visited, the leaf tests vectorised; on the 102k-triangle cloth the streamed broad
+  /// phase's traversal went from about 54 to 45 ms), 4 slower still.
+  static constexpr int kLeafSize = 16;
 
-  /// Orders the n primitives along a Morton curve of the centres of their boxes box_of(i) and
-  /// fits the tree to them (refit), on up to `threads` threads. box_of must be thread-safe.
+  /// Orders the n primitives along a Morton curve of the centres of their boxes box_of(i) (a
+  /// Box, or a FloatBox holding it) and fits the tree to them, on up to `threads` threads.
+  /// box_of must be thread-safe; it is called once per primitive.
   template <class BoxOf>
   void build(std::size_t n, BoxOf&& box_of, unsigned threads) {
-    std::vector<std::pair<std::uint64_t, int>> keys(n);
-    const MortonFrame frame = morton_frame(n, box_of);
+    std::vector<FloatBox> boxes(n);
     parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) keys[i] = {frame.code(box_of(i)), static_cast<int>(i)};
+      for (std::size_t i = begin; i < end; ++i) boxes[i] = as_float_box(box_of(i));
     });
-    set_order(keys, threads);
-    refit(n, box_of, threads);
+    build_from(boxes, threads);
   }
 
-  /// Keeps the order and recomputes every box from box_of(i) (n as at build; throws
+  /// Keeps the order and recomputes every box from box_of(i) (as in build; n as at build; throws
   /// std::invalid_argument otherwise), on up to `threads` threads.
   template <class BoxOf>
   void refit(std::size_t n, BoxOf&& box_of, unsigned threads) {
     require_size(n);
     parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) set_leaf_box(k, float_box(box_of(static_cast<std::size_t>(order_[k]))));
+      for (std::size_t k = begin; k < end; ++k) set_leaf_box(k, as_float_box(box_of(static_cast<std::size_t>(order_[k]))));
     });
     fit_nodes(threads);
   }
@@ -214,9 +215,13 @@ class BoxTree {
 
   /// The index of the lowest set bit of a nonzero mask.
   static int lowest_bit(unsigned mask) {
+#if defined(__GNUC__)
+    return __builtin_ctz(mask);  // one instruction (GCC and clang); the loop below costs one step per bit
+#else
     int i = 0;
     while (!(mask >> i & 1u)) ++i;
     return i;
+#endif
   }
 
   /// report(i, j), and whether to go on (a report returning void always goes on).
@@ -230,23 +235,8 @@ class BoxTree {
     }
   }
 
-  /// The bounding box of the finite box centres, quantised to 21 bits per axis.
-  struct MortonFrame {
-    std::array<double, 3> lo, scale;
-    /// The Morton code of a box's centre (0 for a centre that is not finite).
-    std::uint64_t code(const Box& box) const;
-  };
-
-  template <class BoxOf>
-  static MortonFrame morton_frame(std::size_t n, BoxOf& box_of) {
-    Box bounds = empty_bounds();
-    for (std::size_t i = 0; i < n; ++i) add_centre(bounds, box_of(i));
-    return frame_of(bounds);
-  }
-  static Box empty_bounds();
-  static void add_centre(Box& bounds, const Box& box);
-  static MortonFrame frame_of(const Box& bounds);
-  void set_order(std::vector<std::pair<std::uint64_t, int>>& keys, unsigned threads);
+  void build_from(const std::vector<FloatBox>& boxes, unsigned threads);
+  void set_order(const std::vector<FloatBox>& boxes, unsigned threads);
   void require_size(std::size_t n) const;
   void fit_nodes(unsigned threads);
 

@@ -55,10 +55,22 @@ void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   if (built_ && vertex_boxes.size() != vertex_boxes_.size())
     throw std::invalid_argument("BroadPhaseTrees::fit: the number of vertices changed");
   vertex_boxes_ = std::move(vertex_boxes);
-  const auto triangle = [&](std::size_t t) { return triangle_box(t); };
-  const auto edge = [&](std::size_t e) { return edge_box(e); };
-  const auto point = [&](std::size_t i) { return point_box(i); };
-  const auto vertex = [&](std::size_t i) { return vertex_boxes_[static_cast<std::size_t>(vertices_[i])]; };
+  // The trees' float boxes from the vertices' float boxes: float_box rounds every bound
+  // outwards by a monotone map (float_below, float_above), so the float hull of the vertices'
+  // float boxes is exactly float_box of the hull of their boxes (min and max commute with a
+  // monotone map), the box the tree needs (float_box.hpp), at one conversion per vertex.
+  std::vector<FloatBox> fboxes(vertex_boxes_.size());
+  parallel_ranges(fboxes.size(), threads, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) fboxes[v] = float_box(vertex_boxes_[v]);
+  });
+  const auto fbox = [&](int v) -> const FloatBox& { return fboxes[static_cast<std::size_t>(v)]; };
+  const auto triangle = [&](std::size_t t) {
+    const Triangle& tri = triangles_[t];
+    return hull(hull(fbox(tri[0]), fbox(tri[1])), fbox(tri[2]));
+  };
+  const auto edge = [&](std::size_t e) { return hull(fbox(edges_[e][0]), fbox(edges_[e][1])); };
+  const auto point = [&](std::size_t i) { return fbox(points_[i]); };
+  const auto vertex = [&](std::size_t i) { return fbox(vertices_[i]); };
   if (!built_) {
     vertex_tree_.build(triangles_.empty() ? 0 : vertices_.size(), vertex, threads);
     triangle_tree_.build(triangles_.size(), triangle, threads);
