@@ -96,6 +96,8 @@ void radix_sort(std::vector<std::uint64_t>& keys, unsigned pieces) {
 }  // namespace
 
 void BoxTree::build_from(const std::vector<FloatBox>& boxes, unsigned threads) {
+  leaf_ids_.clear();  // the order changes
+  id_count_ = 0;
   set_order(boxes, threads);
   parallel_ranges(boxes.size(), threads, kGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k) set_leaf_box(k, boxes[static_cast<std::size_t>(order_[k])]);
