@@ -95,17 +95,9 @@ void radix_sort(std::vector<std::uint64_t>& keys, unsigned pieces) {
 
 }  // namespace
 
-void BoxTree::build_from(const std::vector<FloatBox>& boxes, unsigned threads) {
-  leaf_ids_.clear();  // the order changes
-  id_count_ = 0;
-  set_order(boxes, threads);
-  parallel_ranges(boxes.size(), threads, kGrain, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) set_leaf_box(k, boxes[static_cast<std::size_t>(order_[k])]);
-  });
-  fit_nodes(threads);
-}
-
-void BoxTree::set_order(const std::vector<FloatBox>& boxes, unsigned threads) {
+/// The sort keys of the boxes (the Morton code of each centre above its index), on up to
+/// `threads` threads.
+std::vector<std::uint64_t> BoxTree::morton_keys(const std::vector<FloatBox>& boxes, unsigned threads) {
   const std::size_t n = boxes.size();
   static_assert(INT32_MAX / kLeafSize < (std::int64_t{1} << kIndexBits), "indices fit below the codes");
   if (n > static_cast<std::size_t>(INT32_MAX / kLeafSize)) throw std::invalid_argument("BoxTree: too many boxes");
@@ -122,6 +114,14 @@ void BoxTree::set_order(const std::vector<FloatBox>& boxes, unsigned threads) {
   parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) keys[i] = frame.code(boxes[i]) << kIndexBits | i;
   });
+  return keys;
+}
+
+void BoxTree::set_order(std::vector<std::uint64_t>& keys, unsigned threads) {
+  leaf_ids_.clear();  // the order changes
+  id_count_ = 0;
+  const std::size_t n = keys.size();
+  const unsigned pieces = n < 4 * kGrain ? 1 : std::max(1u, threads);
   radix_sort(keys, pieces);
   order_.resize(n);
   for (std::size_t i = 0; i < n; ++i) order_[i] = static_cast<int>(keys[i] & kIndexMask);

@@ -47,14 +47,22 @@ class BoxTree {
 
   /// Orders the n primitives along a Morton curve of the centres of their boxes box_of(i) (a
   /// Box, or a FloatBox holding it) and fits the tree to them, on up to `threads` threads.
-  /// box_of must be thread-safe; it is called once per primitive.
+  /// box_of must be thread-safe; it is called twice per primitive.
   template <class BoxOf>
   void build(std::size_t n, BoxOf&& box_of, unsigned threads) {
-    std::vector<FloatBox> boxes(n);
-    parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) boxes[i] = as_float_box(box_of(i));
-    });
-    build_from(boxes, threads);
+    {  // the boxes only while the sort keys are made, the keys only while sorted (then refit()
+       // takes the boxes again): less peak memory
+      std::vector<std::uint64_t> keys;
+      {
+        std::vector<FloatBox> boxes(n);
+        parallel_ranges(n, threads, kGrain, [&](std::size_t begin, std::size_t end) {
+          for (std::size_t i = begin; i < end; ++i) boxes[i] = as_float_box(box_of(i));
+        });
+        keys = morton_keys(boxes, threads);
+      }
+      set_order(keys, threads);
+    }
+    refit(n, box_of, threads);
   }
 
   /// Keeps the order and recomputes every box from box_of(i) (as in build; n as at build; throws
@@ -77,16 +85,15 @@ class BoxTree {
   template <class VerticesOf>
   void set_vertices(int count, VerticesOf&& vertices_of, unsigned threads) {
     if (count < 1 || count > 3) throw std::invalid_argument("BoxTree::set_vertices: 1 to 3 vertices");
-    leaf_ids_.assign(leaves_.size(), LeafIds{});
-    for (LeafIds& ids : leaf_ids_)
-      for (auto& slot : ids.v) slot.fill(-1);
+    leaf_ids_.assign(leaves_.size() * static_cast<std::size_t>(count * kLeafSize), -1);
     std::atomic<bool> negative{false};
     parallel_ranges(order_.size(), threads, kGrain, [&](std::size_t begin, std::size_t end) {
       for (std::size_t k = begin; k < end; ++k) {
         const std::array<int, 3> v = vertices_of(static_cast<std::size_t>(order_[k]));
         for (int m = 0; m < count; ++m) {
           if (v[static_cast<std::size_t>(m)] < 0) negative = true;
-          leaf_ids_[k / kLeafSize].v[m][k % kLeafSize] = v[static_cast<std::size_t>(m)];
+          leaf_ids_[(k / kLeafSize * static_cast<std::size_t>(count) + static_cast<std::size_t>(m)) * kLeafSize +
+                    k % kLeafSize] = v[static_cast<std::size_t>(m)];
         }
       }
     });
@@ -190,15 +197,16 @@ class BoxTree {
 #endif
   }
 
-  /// The vertex indices of one leaf's primitives, structure of arrays: v[m][lane] (-1: none).
-  struct alignas(16) LeafIds {
-    std::array<std::array<int, kLeafSize>, 3> v;
-  };
+  /// The vertex indices of leaf g's primitives (set_vertices), structure of arrays: index m of
+  /// lane l at ids(g)[m * kLeafSize + l] (-1 past the last primitive).
+  const int* ids(int g) const {
+    return &leaf_ids_[static_cast<std::size_t>(g) * static_cast<std::size_t>(id_count_ * kLeafSize)];
+  }
 
   /// The lanes of `lanes` (among `wanted`, a bit per lane) whose primitives share a vertex index
   /// with the primitive in lane `row` of `rows` (its first row_count indices, all >= 0, against
   /// the lanes' first lane_count, where -1 matches none of them), four lanes per SSE2 compare.
-  static unsigned shared_lanes(const LeafIds& rows, int row, int row_count, const LeafIds& lanes, int lane_count,
+  static unsigned shared_lanes(const int* rows, int row, int row_count, const int* lanes, int lane_count,
                                unsigned wanted) {
     unsigned shared = 0;
 #if defined(__SSE2__)
@@ -206,10 +214,9 @@ class BoxTree {
       if ((wanted >> q & 0xfu) == 0) continue;
       __m128i equal = _mm_setzero_si128();
       for (int m = 0; m < row_count; ++m) {
-        const __m128i id = _mm_set1_epi32(rows.v[static_cast<std::size_t>(m)][static_cast<std::size_t>(row)]);
+        const __m128i id = _mm_set1_epi32(rows[m * kLeafSize + row]);
         for (int s = 0; s < lane_count; ++s)
-          equal = _mm_or_si128(equal, _mm_cmpeq_epi32(id, _mm_load_si128(reinterpret_cast<const __m128i*>(
-                                                              &lanes.v[static_cast<std::size_t>(s)][static_cast<std::size_t>(q)]))));
+          equal = _mm_or_si128(equal, _mm_cmpeq_epi32(id, _mm_loadu_si128(reinterpret_cast<const __m128i*>(lanes + s * kLeafSize + q))));
       }
       shared |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(equal))) << q;
     }
@@ -217,9 +224,7 @@ class BoxTree {
     for (int l = 0; l < kLeafSize; ++l)
       for (int m = 0; m < row_count; ++m)
         for (int s = 0; s < lane_count; ++s)
-          if (rows.v[static_cast<std::size_t>(m)][static_cast<std::size_t>(row)] ==
-              lanes.v[static_cast<std::size_t>(s)][static_cast<std::size_t>(l)])
-            shared |= 1u << l;
+          if (rows[m * kLeafSize + row] == lanes[s * kLeafSize + l]) shared |= 1u << l;
 #endif
     return shared & wanted;
   }
@@ -263,8 +268,7 @@ class BoxTree {
       unsigned hits = overlap_mask(boxes_b, leaf_box(k), cols);
       if (self && a == b) hits &= ~((2u << la) - 1);  // l > k only: each unordered pair once
       if (hits != 0 && id_count_ > 0 && other.id_count_ > 0)
-        hits &= ~shared_lanes(leaf_ids_[static_cast<std::size_t>(leaf_a)], la, id_count_,
-                              other.leaf_ids_[static_cast<std::size_t>(leaf_b)], other.id_count_, hits);
+        hits &= ~shared_lanes(ids(leaf_a), la, id_count_, other.ids(leaf_b), other.id_count_, hits);
       const int i = order_[static_cast<std::size_t>(k)];
       for (; hits != 0; hits &= hits - 1) {
         const int j = other.order_[static_cast<std::size_t>(begin_b + lowest_bit(hits))];
@@ -303,14 +307,14 @@ class BoxTree {
     }
   }
 
-  void build_from(const std::vector<FloatBox>& boxes, unsigned threads);
-  void set_order(const std::vector<FloatBox>& boxes, unsigned threads);
+  static std::vector<std::uint64_t> morton_keys(const std::vector<FloatBox>& boxes, unsigned threads);
+  void set_order(std::vector<std::uint64_t>& keys, unsigned threads);
   void require_size(std::size_t n) const;
   void fit_nodes(unsigned threads);
 
   std::vector<int> order_;       ///< primitive indices in leaf order
   std::vector<LeafBoxes> leaves_;  ///< the primitives' boxes in leaf order (float_box), by leaf
-  std::vector<LeafIds> leaf_ids_;  ///< the primitives' vertex indices by leaf (set_vertices), or none
+  std::vector<int> leaf_ids_;      ///< the primitives' vertex indices by leaf (ids(), set_vertices), or none
   int id_count_ = 0;               ///< vertex indices per primitive (0: none given)
   std::vector<FloatBox> nodes_;       ///< node boxes, index 1..2 * first_leaf_ - 1 (0 unused)
   int first_leaf_ = 1;           ///< the index of the first leaf node (a power of two)
