@@ -55,21 +55,53 @@ void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   if (built_ && vertex_boxes.size() != vertex_boxes_.size())
     throw std::invalid_argument("BroadPhaseTrees::fit: the number of vertices changed");
   vertex_boxes_ = std::move(vertex_boxes);
-  const auto triangle = [&](std::size_t t) { return triangle_box(t); };
-  const auto edge = [&](std::size_t e) { return edge_box(e); };
-  const auto point = [&](std::size_t i) { return point_box(i); };
-  const auto vertex = [&](std::size_t i) { return vertex_boxes_[static_cast<std::size_t>(vertices_[i])]; };
-  if (!built_) {
-    vertex_tree_.build(triangles_.empty() ? 0 : vertices_.size(), vertex, threads);
-    triangle_tree_.build(triangles_.size(), triangle, threads);
-    edge_tree_.build(edges_.size(), edge, threads);
-    point_tree_.build(points_.size(), point, threads);
-    built_ = true;
-  } else {
-    vertex_tree_.refit(triangles_.empty() ? 0 : vertices_.size(), vertex, threads);
-    triangle_tree_.refit(triangles_.size(), triangle, threads);
-    edge_tree_.refit(edges_.size(), edge, threads);
-    point_tree_.refit(points_.size(), point, threads);
+  // The trees' float boxes from the vertices' float boxes: float_box rounds every bound
+  // outwards by a monotone map (float_below, float_above), so the float hull of the vertices'
+  // float boxes is exactly float_box of the hull of their boxes (min and max commute with a
+  // monotone map), the box the tree needs (float_box.hpp), at one conversion per vertex.
+  std::vector<FloatBox> fboxes(vertex_boxes_.size());
+  parallel_ranges(fboxes.size(), threads, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) fboxes[v] = float_box(vertex_boxes_[v]);
+  });
+  // The four trees side by side, largest first, each on its share of the threads: one
+  // thread per tree builds without the start of a thread pool per loop of the build, and
+  // the trees come out the same on any number of threads.
+  constexpr std::size_t kTrees = 4;
+  const unsigned each = std::max(1u, threads / static_cast<unsigned>(kTrees));
+  parallel_chunks(kTrees, threads, 1, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t k = begin; k < end; ++k) fit_tree(static_cast<int>(k), fboxes, each);
+    return true;
+  });
+  built_ = true;
+}
+
+void BroadPhaseTrees::fit_tree(int which, const std::vector<FloatBox>& fboxes, unsigned threads) {
+  const auto fbox = [&](int v) -> const FloatBox& { return fboxes[static_cast<std::size_t>(v)]; };
+  const auto fit_one = [&](BoxTree& tree, std::size_t n, const auto& box_of) {
+    if (built_)
+      tree.refit(n, box_of, threads);
+    else
+      tree.build(n, box_of, threads);
+  };
+  // Pairs sharing a vertex are never candidates: the trees drop them in their leaf tests
+  // (set_vertices; isolated points share no vertex with anything: no indices needed).
+  switch (which) {
+    case 0:
+      fit_one(edge_tree_, edges_.size(), [&](std::size_t e) { return hull(fbox(edges_[e][0]), fbox(edges_[e][1])); });
+      if (!built_) edge_tree_.set_vertices(2, [&](std::size_t e) { return std::array<int, 3>{edges_[e][0], edges_[e][1], -1}; }, threads);
+      break;
+    case 1:
+      fit_one(triangle_tree_, triangles_.size(), [&](std::size_t t) {
+        const Triangle& tri = triangles_[t];
+        return hull(hull(fbox(tri[0]), fbox(tri[1])), fbox(tri[2]));
+      });
+      if (!built_) triangle_tree_.set_vertices(3, [&](std::size_t t) { return triangles_[t]; }, threads);
+      break;
+    case 2:
+      fit_one(vertex_tree_, triangles_.empty() ? 0 : vertices_.size(), [&](std::size_t i) { return fbox(vertices_[i]); });
+      if (!built_) vertex_tree_.set_vertices(1, [&](std::size_t i) { return std::array<int, 3>{vertices_[i], -1, -1}; }, threads);
+      break;
+    default: fit_one(point_tree_, points_.size(), [&](std::size_t i) { return fbox(points_[i]); });
   }
 }
 

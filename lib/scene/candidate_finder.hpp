@@ -103,6 +103,9 @@ class BroadPhaseTrees {
     return hull(vertex_boxes_[static_cast<std::size_t>(edges_[e][0])], vertex_boxes_[static_cast<std::size_t>(edges_[e][1])]);
   }
   Box point_box(std::size_t i) const { return vertex_boxes_[static_cast<std::size_t>(points_[i])]; }
+  /// Builds (first fit) or refits one tree (0: edges, 1: triangles, 2: vertices, 3: points)
+  /// from the vertices' float boxes, on up to `threads` threads.
+  void fit_tree(int which, const std::vector<FloatBox>& fboxes, unsigned threads);
   /// vertex_tree_: over `vertices` (empty without triangles), for the vertex-face pairs.
   BoxTree vertex_tree_, triangle_tree_, edge_tree_, point_tree_;
   bool built_ = false;

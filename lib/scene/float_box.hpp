@@ -65,6 +65,10 @@ inline FloatBox float_box(const Box& b) {
           {{float_above(b.hi[0]), float_above(b.hi[1]), float_above(b.hi[2])}}};
 }
 
+/// A box as a float box holding it: float_box() of a double box, a float box itself.
+inline FloatBox as_float_box(const Box& b) { return float_box(b); }
+inline const FloatBox& as_float_box(const FloatBox& b) { return b; }
+
 /// An empty float box (lo = +inf, hi = -inf): the hull's neutral element, overlapping nothing.
 inline FloatBox empty_float_box() {
   constexpr float inf = std::numeric_limits<float>::infinity();

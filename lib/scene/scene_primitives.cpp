@@ -86,15 +86,23 @@ void require_valid_params(const CcdParams& params) {
 
 void require_finite_positions(const std::vector<Vec3>& positions, const char* name) {
   for (std::size_t i = 0; i < positions.size(); ++i) {
+    // x - x is +0 for a finite x (any rounding mode: an exact zero difference is +0 except
+    // rounding downwards, where it is -0, which also compares equal to 0) and NaN for an
+    // infinity or a NaN; a sum with a NaN term is NaN, which compares unequal to 0.
     const Vec3& p = positions[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    if (!((p.x - p.x) + (p.y - p.y) + (p.z - p.z) == 0))
       fail(std::string(name) + "[" + std::to_string(i) + "] has a non-finite coordinate (NaN or infinity)");
   }
 }
 
 void require_valid_triangles(const std::vector<Triangle>& triangles, std::size_t vertex_count) {
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-    require_valid_indices(triangles[i], i, "triangle", vertex_count);
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    // The usual case at a few comparisons; a bad triangle gets require_valid_indices' message.
+    const Triangle& t = triangles[i];
+    const auto in_range = [&](int v) { return v >= 0 && static_cast<std::size_t>(v) < vertex_count; };
+    if (!in_range(t[0]) || !in_range(t[1]) || !in_range(t[2]) || t[0] == t[1] || t[0] == t[2] || t[1] == t[2])
+      require_valid_indices(t, i, "triangle", vertex_count);
+  }
 }
 
 namespace {
@@ -113,16 +121,21 @@ ScenePrimitives topology(const SceneT& s, bool with_points) {
     std::inplace_merge(p.edges.begin(), p.edges.begin() + middle, p.edges.end());
     p.edges.erase(std::unique(p.edges.begin(), p.edges.end()), p.edges.end());
   }
-  std::vector<bool> used(s.positions_t0.size(), false), on_edge(s.positions_t0.size(), false);
+  // Bytes, not std::vector<bool>: a store per mark instead of a read-modify-write of a bit. The
+  // triangles' edges have only the triangles' vertices: the extra edges' are marked on their own.
+  std::vector<char> used(s.positions_t0.size(), 0);
   for (const Triangle& t : triangles)
-    for (int v : t) used[v] = true;
-  for (const Edge& e : p.edges) used[e[0]] = used[e[1]] = on_edge[e[0]] = on_edge[e[1]] = true;
-  for (int v : s.points) used[v] = true;
+    for (int v : t) used[static_cast<std::size_t>(v)] = 1;
+  for (const auto& e : s.edges) used[static_cast<std::size_t>(e[0])] = used[static_cast<std::size_t>(e[1])] = 1;
+  for (int v : s.points) used[static_cast<std::size_t>(v)] = 1;
+  p.vertices.reserve(used.size());
   for (std::size_t v = 0; v < used.size(); ++v)
     if (used[v]) p.vertices.push_back(static_cast<int>(v));
-  if (with_points) {
+  if (with_points && !s.points.empty()) {
+    std::vector<char> on_edge(s.positions_t0.size(), 0);
+    for (const Edge& e : p.edges) on_edge[static_cast<std::size_t>(e[0])] = on_edge[static_cast<std::size_t>(e[1])] = 1;
     for (int v : s.points)
-      if (!on_edge[v]) p.points.push_back(v);
+      if (!on_edge[static_cast<std::size_t>(v)]) p.points.push_back(v);
     std::sort(p.points.begin(), p.points.end());
     p.points.erase(std::unique(p.points.begin(), p.points.end()), p.points.end());
   }

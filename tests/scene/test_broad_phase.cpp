@@ -14,6 +14,8 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "exactccd/exactccd.hpp"
 #include "scene/box_tree.hpp"
@@ -422,6 +424,69 @@ TEST(BoxTreePairs, EveryOverlappingPairOnceWhateverTheTasks) {
         EXPECT_EQ(cross, want_cross) << what;
       }
     }
+}
+
+/// BoxTree::set_vertices: pairs_from between trees that both have vertex indices reports every
+/// overlapping pair that shares no index exactly once and no pair that shares one (brute force,
+/// written out), for 1, 2 and 3 indices per primitive on either side (drawn from a few values,
+/// so that many overlapping pairs share one), and again after a refit.
+TEST(BoxTreePairs, SetVerticesDropsExactlyThePairsSharingAVertex) {
+  std::mt19937 rng(23);
+  const auto overlapping = [](const scene::Box& a, const scene::Box& b) {
+    for (int k = 0; k < 3; ++k)
+      if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+    return true;
+  };
+  std::uniform_int_distribution<int> vertex(0, 40);
+  const auto indices = [&](std::size_t n, int count) {
+    std::vector<std::array<int, 3>> v(n);
+    for (auto& x : v)
+      for (int m = 0; m < 3; ++m) x[static_cast<std::size_t>(m)] = m < count ? vertex(rng) : -1;
+    return v;
+  };
+  const auto share = [](const std::array<int, 3>& x, int nx, const std::array<int, 3>& y, int ny) {
+    for (int m = 0; m < nx; ++m)
+      for (int s = 0; s < ny; ++s)
+        if (x[static_cast<std::size_t>(m)] == y[static_cast<std::size_t>(s)]) return true;
+    return false;
+  };
+  for (const int ca : {1, 2, 3})
+    for (const int cb : {1, 2, 3}) {
+      const std::vector<scene::Box> a = grid_boxes(300, rng), b = grid_boxes(200, rng);
+      const auto va = indices(a.size(), ca), vb = indices(b.size(), cb);
+      scene::BoxTree ta, tb;
+      ta.build(a.size(), [&](std::size_t i) { return a[i]; }, 2);
+      tb.build(b.size(), [&](std::size_t i) { return b[i]; }, 1);
+      for (int round = 0; round < 2; ++round) {
+        if (round == 1) {  // refit keeps the indices
+          ta.refit(a.size(), [&](std::size_t i) { return a[i]; }, 1);
+          tb.refit(b.size(), [&](std::size_t i) { return b[i]; }, 2);
+        } else {
+          ta.set_vertices(ca, [&](std::size_t i) { return va[i]; }, 2);
+          tb.set_vertices(cb, [&](std::size_t i) { return vb[i]; }, 1);
+        }
+        std::vector<std::array<int, 2>> want_self, want_cross, self, cross;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+          for (std::size_t j = i + 1; j < a.size(); ++j)
+            if (overlapping(a[i], a[j]) && !share(va[i], ca, va[j], ca)) want_self.push_back({static_cast<int>(i), static_cast<int>(j)});
+          for (std::size_t j = 0; j < b.size(); ++j)
+            if (overlapping(a[i], b[j]) && !share(va[i], ca, vb[j], cb)) want_cross.push_back({static_cast<int>(i), static_cast<int>(j)});
+        }
+        for (const auto& task : ta.pair_tasks(ta, 7)) ta.pairs_from(ta, task, [&](int i, int j) { self.push_back({i, j}); });
+        for (const auto& task : ta.pair_tasks(tb, 7)) ta.pairs_from(tb, task, [&](int i, int j) { cross.push_back({i, j}); });
+        std::sort(self.begin(), self.end());
+        std::sort(cross.begin(), cross.end());
+        const std::string what = std::to_string(ca) + " x " + std::to_string(cb) + " indices, round " + std::to_string(round);
+        EXPECT_EQ(self, want_self) << what;
+        EXPECT_EQ(cross, want_cross) << what;
+        EXPECT_GT(want_self.size(), 0u) << what;
+      }
+    }
+  scene::BoxTree t;
+  const std::vector<scene::Box> boxes = grid_boxes(10, rng);
+  t.build(boxes.size(), [&](std::size_t i) { return boxes[i]; }, 1);
+  EXPECT_THROW(t.set_vertices(2, [](std::size_t) { return std::array<int, 3>{1, -1, -1}; }, 1), std::invalid_argument);
+  EXPECT_THROW(t.set_vertices(4, [](std::size_t) { return std::array<int, 3>{1, 2, 3}; }, 1), std::invalid_argument);
 }
 
 }  // namespace
