@@ -84,19 +84,35 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
   return out;
 }
 
-/// The contact question's step after stage 1, past the hot path: the query brought to a
-/// magnitude near 1 (exactly) so that huge or tiny coordinates do not overflow or underflow the
-/// later filters (answers are unchanged), and stage 1 retried on it only where its range
-/// limits stopped it (volume_exclusion.hpp: otherwise the scaled query's rounded values are
-/// the same up to a power of two). Counted as volume exclusion when the retry decides.
-struct UnitScalingStage {
+/// The contact question's step right after stage 1, where its range limits stopped it
+/// (volume_exclusion.hpp: otherwise the scaled query's rounded values are the same up to a power
+/// of two, and the retry could not decide): the query brought to a magnitude near 1 (exactly:
+/// answers are unchanged) and stage 1 retried on it. Counted as volume exclusion when the retry
+/// decides.
+struct VolumeRetryStage {
   static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
-  /// Rescales work.query(); decides when the retried stage 1 does.
+  /// Rescales work.query() and retries stage 1, only after an out-of-range stage 1.
   template <class Query>
   pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    if (!work.findings.volume_out_of_range) return pipeline::Outcome::undecided();
     if (!scale_to_unit(work.query(), work.replacement())) return pipeline::Outcome::undecided();
     work.use_replacement();
-    if (work.findings.volume_out_of_range && volume_excluded(work.query())) return pipeline::Outcome::separate();
+    return volume_excluded(work.query()) ? pipeline::Outcome::separate() : pipeline::Outcome::undecided();
+  }
+};
+
+/// The contact question's step before the interval stage (never decides): the query brought to
+/// a magnitude near 1 (exactly: answers are unchanged) so that huge or tiny coordinates do not
+/// overflow or underflow the interval and integer stages. After the static and separating-plane
+/// stages, which need no scaling (exact predicates; a frame scaled by the plane stage itself),
+/// so that the queries they decide (most of those stage 1 passes on) are not copied and scaled.
+/// A query VolumeRetryStage scaled already is at unit scale: scaling it again changes nothing.
+struct UnitScalingStage {
+  static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< never decides
+  /// Rescales work.query(); always undecided.
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    if (scale_to_unit(work.query(), work.replacement())) work.use_replacement();
     return pipeline::Outcome::undecided();
   }
 };
