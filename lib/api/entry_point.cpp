@@ -7,6 +7,7 @@
 #include <string>
 #include <type_traits>
 
+#include "api/checked_query.hpp"
 #include "api/number_text.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exactccd/ccd.hpp"
@@ -64,6 +65,11 @@ std::optional<TimeInterval> answer_query(const Query& q, const CcdParams& params
   return pipeline::filtered_method(q, question, counters);
 }
 
+template <class Query>
+std::optional<TimeInterval> answer_checked_query(const Query& q, const CcdParams& params, bool want_toi) {
+  return pipeline::filtered_method(q, pipeline::Question{params, want_toi}, nullptr);
+}
+
 template <class RationalQuery>
 std::optional<TimeInterval> answer_rational_query(const RationalQuery& q, const RationalCcdParams& p, bool want_toi) {
   const numeric::DefaultFpEnvironment fp_environment;  // CGAL's kernel filters with intervals
@@ -89,6 +95,14 @@ template std::optional<TimeInterval> answer_query(const PointPointQuery&, const 
 template std::optional<TimeInterval> answer_query(const EdgeEdge2dQuery&, const CcdParams&, Method, bool, StageCounters*);
 template std::optional<TimeInterval> answer_query(const PointEdge2dQuery&, const CcdParams&, Method, bool, StageCounters*);
 template std::optional<TimeInterval> answer_query(const PointPoint2dQuery&, const CcdParams&, Method, bool, StageCounters*);
+
+template std::optional<TimeInterval> answer_checked_query(const VertexFaceQuery&, const CcdParams&, bool);
+template std::optional<TimeInterval> answer_checked_query(const EdgeEdgeQuery&, const CcdParams&, bool);
+template std::optional<TimeInterval> answer_checked_query(const PointEdgeQuery&, const CcdParams&, bool);
+template std::optional<TimeInterval> answer_checked_query(const PointPointQuery&, const CcdParams&, bool);
+template std::optional<TimeInterval> answer_checked_query(const EdgeEdge2dQuery&, const CcdParams&, bool);
+template std::optional<TimeInterval> answer_checked_query(const PointEdge2dQuery&, const CcdParams&, bool);
+template std::optional<TimeInterval> answer_checked_query(const PointPoint2dQuery&, const CcdParams&, bool);
 
 template std::optional<TimeInterval> answer_rational_query(const RationalVertexFaceQuery&, const RationalCcdParams&, bool);
 template std::optional<TimeInterval> answer_rational_query(const RationalEdgeEdgeQuery&, const RationalCcdParams&, bool);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 
 #include "exactccd/types.hpp"
 #include "filter/volume_exclusion.hpp"
@@ -22,10 +23,20 @@ namespace exactccd::filter {
 template <class Query>
 bool scale_to_unit(const Query& q, Query& out) {
   auto r = rows(q);
-  double largest = 0;
-  // Finite input: plain comparisons (std::fmax's NaN handling costs a library call each).
-  for (const Vec3& p : r)
-    for (const double x : {p.x, p.y, p.z}) largest = std::fabs(x) > largest ? std::fabs(x) : largest;
+  // Finite input: plain comparisons (std::fmax's NaN handling costs a library call each), in
+  // four independent running maxima (one chain of 24 dependent comparisons was most of this
+  // function's time on the cloth-ball step); the maximum is the same in any order.
+  double m[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const double c[3] = {std::fabs(r[i].x), std::fabs(r[i].y), std::fabs(r[i].z)};
+    double& a = m[i % 2 * 2];
+    double& b = m[i % 2 * 2 + 1];
+    a = c[0] > a ? c[0] : a;
+    b = c[1] > b ? c[1] : b;
+    a = c[2] > a ? c[2] : a;
+  }
+  const double m01 = m[0] > m[1] ? m[0] : m[1], m23 = m[2] > m[3] ? m[2] : m[3];
+  const double largest = m01 > m23 ? m01 : m23;
   if (largest == 0) return false;
   const numeric::UnitScale unit = numeric::unit_scale(largest);
   const int s = unit.s;
@@ -73,19 +84,35 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
   return out;
 }
 
-/// The contact question's step after stage 1, past the hot path: the query brought to a
-/// magnitude near 1 (exactly) so that huge or tiny coordinates do not overflow or underflow the
-/// later filters (answers are unchanged), and stage 1 retried on it only where its range
-/// limits stopped it (volume_exclusion.hpp: otherwise the scaled query's rounded values are
-/// the same up to a power of two). Counted as volume exclusion when the retry decides.
-struct UnitScalingStage {
+/// The contact question's step right after stage 1, where its range limits stopped it
+/// (volume_exclusion.hpp: otherwise the scaled query's rounded values are the same up to a power
+/// of two, and the retry could not decide): the query brought to a magnitude near 1 (exactly:
+/// answers are unchanged) and stage 1 retried on it. Counted as volume exclusion when the retry
+/// decides.
+struct VolumeRetryStage {
   static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
-  /// Rescales work.query(); decides when the retried stage 1 does.
+  /// Rescales work.query() and retries stage 1, only after an out-of-range stage 1.
   template <class Query>
   pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    if (!work.findings.volume_out_of_range) return pipeline::Outcome::undecided();
     if (!scale_to_unit(work.query(), work.replacement())) return pipeline::Outcome::undecided();
     work.use_replacement();
-    if (work.findings.volume_out_of_range && volume_excluded(work.query())) return pipeline::Outcome::separate();
+    return volume_excluded(work.query()) ? pipeline::Outcome::separate() : pipeline::Outcome::undecided();
+  }
+};
+
+/// The contact question's step before the interval stage (never decides): the query brought to
+/// a magnitude near 1 (exactly: answers are unchanged) so that huge or tiny coordinates do not
+/// overflow or underflow the interval and integer stages. After the static and separating-plane
+/// stages, which need no scaling (exact predicates; a frame scaled by the plane stage itself),
+/// so that the queries they decide (most of those stage 1 passes on) are not copied and scaled.
+/// A query VolumeRetryStage scaled already is at unit scale: scaling it again changes nothing.
+struct UnitScalingStage {
+  static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< never decides
+  /// Rescales work.query(); always undecided.
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    if (scale_to_unit(work.query(), work.replacement())) work.use_replacement();
     return pipeline::Outcome::undecided();
   }
 };

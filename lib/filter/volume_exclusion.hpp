@@ -73,15 +73,35 @@ struct RoundedDeterminant {
   double permanent;
 };
 
-/// Shewchuk's orient3dfast evaluation order, whose error bound the comment above quotes.
-inline RoundedDeterminant rounded_determinant(const Vec3& u, const Vec3& v, const Vec3& w) {
+/// What a determinant u . (v x w) needs of v and w in Shewchuk's orient3dfast evaluation order:
+/// the rounded cross product v x w and, per component, the sum of its two products' magnitudes
+/// (for the permanent). The eight determinants of a volume share four of these (one per pair
+/// of rows v_j, w_k), so each is formed once; the determinants' values are the same.
+struct CrossTerms {
+  Vec3 cross;      ///< fl(v_y w_z - v_z w_y), ... (the products rounded, then their difference)
+  Vec3 magnitude;  ///< fl(|v_y w_z| + |v_z w_y|), ...
+};
+
+/// The cross terms of v and w (CrossTerms).
+inline CrossTerms cross_terms(const Vec3& v, const Vec3& w) {
   const double vy_wz = v.y * w.z, vz_wy = v.z * w.y;
   const double vz_wx = v.z * w.x, vx_wz = v.x * w.z;
   const double vx_wy = v.x * w.y, vy_wx = v.y * w.x;
-  return {u.x * (vy_wz - vz_wy) + u.y * (vz_wx - vx_wz) + u.z * (vx_wy - vy_wx),
-          (std::fabs(vy_wz) + std::fabs(vz_wy)) * std::fabs(u.x) +
-              (std::fabs(vz_wx) + std::fabs(vx_wz)) * std::fabs(u.y) +
-              (std::fabs(vx_wy) + std::fabs(vy_wx)) * std::fabs(u.z)};
+  return {{vy_wz - vz_wy, vz_wx - vx_wz, vx_wy - vy_wx},
+          {std::fabs(vy_wz) + std::fabs(vz_wy), std::fabs(vz_wx) + std::fabs(vx_wz),
+           std::fabs(vx_wy) + std::fabs(vy_wx)}};
+}
+
+/// det[u, v, w] from u and the cross terms of v and w, in orient3dfast's order (the error bound
+/// of the comment above).
+inline RoundedDeterminant rounded_determinant(const Vec3& u, const CrossTerms& vw) {
+  return {u.x * vw.cross.x + u.y * vw.cross.y + u.z * vw.cross.z,
+          vw.magnitude.x * std::fabs(u.x) + vw.magnitude.y * std::fabs(u.y) + vw.magnitude.z * std::fabs(u.z)};
+}
+
+/// Shewchuk's orient3dfast evaluation order, whose error bound the comment above quotes.
+inline RoundedDeterminant rounded_determinant(const Vec3& u, const Vec3& v, const Vec3& w) {
+  return rounded_determinant(u, cross_terms(v, w));
 }
 
 /// tau = fl(10 eps Q~), the bound of the comment above on a group's error (valid when
@@ -147,11 +167,13 @@ inline std::optional<std::array<CertifiedSum, 4>> certified_volume_bernstein(con
                                                                              const Vec3& v0, const Vec3& v1,
                                                                              const Vec3& w0, const Vec3& w1) {
   const double threshold = underflow_threshold(u0, u1, v0, v1, w0, w1);
-  const RoundedDeterminant d000 = rounded_determinant(u0, v0, w0), d111 = rounded_determinant(u1, v1, w1);
-  const RoundedDeterminant d100 = rounded_determinant(u1, v0, w0), d010 = rounded_determinant(u0, v1, w0),
-                           d001 = rounded_determinant(u0, v0, w1);
-  const RoundedDeterminant d110 = rounded_determinant(u1, v1, w0), d101 = rounded_determinant(u1, v0, w1),
-                           d011 = rounded_determinant(u0, v1, w1);
+  const CrossTerms c00 = cross_terms(v0, w0), c11 = cross_terms(v1, w1), c10 = cross_terms(v1, w0),
+                   c01 = cross_terms(v0, w1);  // c_jk: of v_j and w_k
+  const RoundedDeterminant d000 = rounded_determinant(u0, c00), d111 = rounded_determinant(u1, c11);
+  const RoundedDeterminant d100 = rounded_determinant(u1, c00), d010 = rounded_determinant(u0, c10),
+                           d001 = rounded_determinant(u0, c01);
+  const RoundedDeterminant d110 = rounded_determinant(u1, c10), d101 = rounded_determinant(u1, c01),
+                           d011 = rounded_determinant(u0, c11);
   const std::optional<CertifiedSum> b[4] = {
       certified_group(d000.value, d000.permanent, threshold),
       certified_group(d100.value + d010.value + d001.value, d100.permanent + d010.permanent + d001.permanent,
@@ -180,7 +202,7 @@ enum class Exclusion {
 /// in both runs the signs agree, and where it fails in the scaled run the answer there is
 /// out_of_range, never excluded. So a not_proven answer stays not_proven after scaling but for
 /// the subnormal cases. The filtered method therefore retries on the query scaled towards 1
-/// (filter/normalize.hpp, UnitScalingStage) only after out_of_range; skipping a retry can only leave a query to the
+/// (filter/normalize.hpp, VolumeRetryStage) only after out_of_range; skipping a retry can only leave a query to the
 /// later stages, which are sound for every input.
 inline Exclusion volume_exclusion(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, const Vec3& w0,
                                   const Vec3& w1) {
@@ -188,24 +210,28 @@ inline Exclusion volume_exclusion(const Vec3& u0, const Vec3& u1, const Vec3& v0
   const auto verdict = [](int s, int s0) {
     return s == kOutOfRange ? Exclusion::out_of_range : s == s0 ? Exclusion::excluded : Exclusion::not_proven;
   };
-  const RoundedDeterminant d000 = rounded_determinant(u0, v0, w0);
+  // D_ijk = u_i . c_jk, c_jk the cross terms of v_j and w_k, each formed once (CrossTerms).
+  const CrossTerms c00 = cross_terms(v0, w0);
+  const RoundedDeterminant d000 = rounded_determinant(u0, c00);
   const int s0 = certified_group_sign(d000.value, d000.permanent, threshold);
   if (s0 == 0 || s0 == kOutOfRange) return verdict(s0, 1);
-  const RoundedDeterminant d111 = rounded_determinant(u1, v1, w1);
+  const CrossTerms c11 = cross_terms(v1, w1);
+  const RoundedDeterminant d111 = rounded_determinant(u1, c11);
   if (const Exclusion e = verdict(certified_group_sign(d111.value, d111.permanent, threshold), s0);
       e != Exclusion::excluded)
     return e;
-  const RoundedDeterminant d100 = rounded_determinant(u1, v0, w0);
-  const RoundedDeterminant d010 = rounded_determinant(u0, v1, w0);
-  const RoundedDeterminant d001 = rounded_determinant(u0, v0, w1);
+  const CrossTerms c10 = cross_terms(v1, w0), c01 = cross_terms(v0, w1);
+  const RoundedDeterminant d100 = rounded_determinant(u1, c00);
+  const RoundedDeterminant d010 = rounded_determinant(u0, c10);
+  const RoundedDeterminant d001 = rounded_determinant(u0, c01);
   if (const Exclusion e = verdict(certified_group_sign(d100.value + d010.value + d001.value,
                                                        d100.permanent + d010.permanent + d001.permanent, threshold),
                                   s0);
       e != Exclusion::excluded)
     return e;
-  const RoundedDeterminant d110 = rounded_determinant(u1, v1, w0);
-  const RoundedDeterminant d101 = rounded_determinant(u1, v0, w1);
-  const RoundedDeterminant d011 = rounded_determinant(u0, v1, w1);
+  const RoundedDeterminant d110 = rounded_determinant(u1, c10);
+  const RoundedDeterminant d101 = rounded_determinant(u1, c01);
+  const RoundedDeterminant d011 = rounded_determinant(u0, c11);
   return verdict(certified_group_sign(d110.value + d101.value + d011.value,
                                       d110.permanent + d101.permanent + d011.permanent, threshold),
                  s0);

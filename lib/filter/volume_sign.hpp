@@ -16,8 +16,9 @@
 
 namespace exactccd::filter {
 
-/// V of one query at any number of doubles t: the query scaled once (ScaledRows), then each t
-/// evaluated in double-double.
+/// V of one query at any number of doubles t: the query scaled once (ScaledRows), the parts of
+/// its three edge vectors that do not depend on t formed once, then each t evaluated in
+/// double-double.
 class VolumeSigns {
  public:
   /// V of a vertex-face query.
@@ -32,8 +33,17 @@ class VolumeSigns {
   int sign_at(double t, double* approximation = nullptr) const;
 
  private:
-  numeric::ScaledRows<8> rows_;
-  std::array<int, 4> volume_rows_;  // V = det[u - base, v - base, w - base] for rows {base, u, v, w}
+  template <class Query>
+  void hoist(const Query& q);
+
+  // V = det[A, B, C], A, B, C the vectors from the kind's volume row `base` to its rows u, v, w.
+  // A coordinate of such a vector at t is numeric::double_word::difference_at: d0 + t (d1 - d0),
+  // d0 and d1 the exact differences at t0 and t1 (GeometryAt::vector). d0 (`start_`) and
+  // d1 - d0 (`change_`) do not depend on t: formed once here by the same operations, so each
+  // sign_at computes the same values as from GeometryAt, with a third of the work.
+  using Approx = numeric::double_word::Approx;
+  std::array<Vec3T<Approx>, 3> start_{}, change_{};
+  bool usable_ = false;  // false: the scaled rows are not usable (ScaledRows::usable)
 };
 
 /// The certified sign (-1 or +1) of V(t) (V as in contact_polynomials.hpp) for a double t in

@@ -21,9 +21,10 @@ std::optional<TimeInterval> through_contact_stages(const Query& q, const Questio
   const std::optional<TimeInterval> toi =
       run_stages(work,
                  filter::VolumeExclusionStage{},  // 1. V(t) != 0 on [0, 1] (static error bound)
-                 filter::UnitScalingStage{},      //    the query scaled towards 1; 1. again if out of range
+                 filter::VolumeRetryStage{},      //    1. again on the query scaled towards 1, if out of range
                  filter::StaticQueryStage{},      //    nothing moves: CGAL's exact static predicates at t = 0
                  filter::SeparatingPlaneStage{},  //    a plane separates them at t0 and at t1: apart throughout
+                 filter::UnitScalingStage{},      //    the query scaled towards 1 for the stages below
                  filter::IntervalStage{},         // 2. V's roots and the in-plane rule in intervals
                  filter::ToiInCellStage{},        //    a collision's TOI in its root cell (double-double)
                  filter::FixedIntegerStage{},     // 3a. exact, in 1024-bit integers (no allocation)

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/checked_query.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"
 #include "scene/parallel.hpp"
@@ -63,6 +64,9 @@ class PairTests {
   using PP = std::conditional_t<planar, PointPoint2dQuery, PointPointQuery>;
 
   /// The tests of pairs over these positions (kept by reference) for the question params.
+  /// The caller has validated both (finite coordinates; scene::validate(SceneOptions)) and
+  /// runs the tests under the default floating-point environment (scene::SceneCall on its
+  /// thread, parallel_chunks on the workers): the queries are answered by answer_checked_query.
   PairTests(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params)
       : x0_(x0), x1_(x1), params_(params) {}
 
@@ -89,12 +93,12 @@ class PairTests {
 
   /// The time of impact of a pair (std::nullopt: no collision in [0, tmax]).
   std::optional<TimeInterval> toi(const PairSides& r) const {
-    return with_query(r, [&](const auto& q) { return exactccd::toi(q, params_); });
+    return with_query(r, [&](const auto& q) { return answer_checked_query(q, params_, true); });
   }
 
   /// Whether a pair collides at all.
   bool collides(const PairSides& r) const {
-    return with_query(r, [&](const auto& q) { return exactccd::ccd(q, params_); });
+    return with_query(r, [&](const auto& q) { return answer_checked_query(q, params_, false).has_value(); });
   }
 
   /// Whether the boxes of the pair's two primitives over [0, tmax], grown by d, overlap: the

@@ -2,7 +2,9 @@
 // candidates, shared by the scene functions, the CLI and the scene benchmark.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -82,11 +84,16 @@ template <class Query, class Point>
 Query pair_query(const std::vector<Point>& x0, const std::vector<Point>& x1, const int* a, int na,
                  const int* b, int nb) {
   constexpr std::size_t n = std::tuple_size<decltype(rows(std::declval<Query>()))>::value / 2;
-  std::array<Point, 2 * n> r{};
-  for (std::size_t i = 0; i < n && static_cast<int>(i) < na + nb; ++i) {
-    const int v = static_cast<int>(i) < na ? a[i] : b[i - na];
-    r[i] = x0[v];
-    r[n + i] = x1[v];
+  if (na < 0 || nb < 0 || static_cast<std::size_t>(na + nb) != n)
+    throw std::logic_error("exactccd scene: a pair's sides do not make up its query");
+  std::array<int, n> v{};  // the query's vertices in row order
+  for (int i = 0; i < na; ++i) v[static_cast<std::size_t>(i)] = a[i];
+  for (int i = 0; i < nb; ++i) v[static_cast<std::size_t>(na + i)] = b[i];
+  // Every row written below (no zero fill first: a `rep stos` that showed in profiles).
+  std::array<Point, 2 * n> r;
+  for (std::size_t i = 0; i < n; ++i) {
+    r[i] = x0[static_cast<std::size_t>(v[i])];
+    r[n + i] = x1[static_cast<std::size_t>(v[i])];
   }
   return from_rows<Query>(r);
 }

@@ -18,16 +18,30 @@ enum class Narrowing {
 /// True when the cell cannot be narrowed any further (a point, or consecutive doubles).
 inline bool tight(const RootCell& cell) { return cell.is_point() || !(next_up_nonnegative(cell.lo) < cell.hi); }
 
-/// p's value at the double t >= 0 in interval arithmetic (under the stage's upward rounding):
-/// Horner's scheme with interval-by-double products. For t >= 0 each product is [lo t, hi t],
-/// both bounds single products rounded outwards, which are the bounds the general product by
-/// the point interval [t, t] also keeps (its other two products lie inside them): the same
-/// enclosure for the price of one multiplication instead of four.
+/// The sign class (classify) of p's interval value at a double t > 0, under the stage's upward
+/// rounding: Horner's scheme on the bounds. Write the interval [lo, hi] as the pair (-lo, hi),
+/// as CGAL::Interval_nt does. For t > 0 the product of [lo, hi] by t is [lo t, hi t], and every
+/// step r t + c of Horner's scheme is increasing in each bound, so rounding upwards gives
+///     hi' = fl(fl(hi t) + c.hi) >= hi t + c.hi,   nlo' = fl(fl(nlo t) + (-c.lo)) >= -(lo t + c.lo)
+/// with nlo = -lo: the interval [-nlo', hi'] holds r t + c for every r in [lo, hi] and c in
+/// [c.lo, c.hi], so by induction p(t) lies in [-nlo, hi] at the end. These are, bit for bit,
+/// the bounds CGAL's interval-by-double product and sum compute (the same two products and sums
+/// rounded upwards; its product also takes the minimum with the widest interval, which only
+/// replaces a NaN from 0 times an infinite bound: t > 0 gives none), without its per-operation
+/// compiler barriers and that minimum on the loop's critical path. Infinite bounds (overflow)
+/// stay infinite and never classify as certain. Two independent chains of D multiplications
+/// and additions: no rounding-mode switch, no allocation.
 template <int D>
-Interval value_at(const contact::Poly<Interval, D>& p, double t) {
-  Interval r = p.c[D];
-  for (int k = D - 1; k >= 0; --k) r = r * t + p.c[k];
-  return r;
+SignClass sign_class_at(const contact::Poly<Interval, D>& p, double t) {
+  double nlo = -p.c[D].inf(), hi = p.c[D].sup();
+  for (int k = D - 1; k >= 0; --k) {
+    nlo = nlo * t + -p.c[k].inf();  // -p.c[k].inf() is exact
+    hi = hi * t + p.c[k].sup();
+  }
+  if (nlo < 0) return SignClass::positive;  // lower bound -nlo > 0
+  if (hi < 0) return SignClass::negative;
+  if (nlo == 0 && hi == 0) return SignClass::zero;
+  return SignClass::unknown;
 }
 
 /// Halves the root cell of p while p's sign at the midpoint is certain, at most max_steps
@@ -39,7 +53,7 @@ Narrowing narrow(const contact::Poly<Interval, D>& p, RootCell& cell, int max_st
     if (tight(cell)) return Narrowing::done;
     double mid = cell.lo + (cell.hi - cell.lo) / 2;
     if (!(cell.lo < mid && mid < cell.hi)) mid = next_up_nonnegative(cell.lo);
-    const SignClass c = classify(value_at(p, mid));  // mid in (lo, hi), lo >= 0
+    const SignClass c = sign_class_at(p, mid);  // mid in (lo, hi), lo >= 0: mid > 0
     if (c == SignClass::unknown) return Narrowing::stuck;
     if (c == SignClass::zero) {
       cell = RootCell{mid, mid, 0};
