@@ -34,11 +34,8 @@
 #include "fuzz/families.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "scene/scene_primitives.hpp"
+#include "tests/fp_environments.hpp"
 
-#if defined(__x86_64__) || defined(_M_X64)
-#include <xmmintrin.h>
-#define EXACTCCD_TEST_X86_64 1
-#endif
 
 // ---- fault injection: operator new throws on the n-th allocation of this thread when armed ----
 namespace {
@@ -98,76 +95,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// ---- environments -------------------------------------------------------------------------
+// ---- environments (tests/fp_environments.hpp) ----------------------------------------------
 
-struct Environment {
-  const char* name;
-  int rounding;    ///< FE_TONEAREST, FE_UPWARD, ...
-  bool ftz_daz;    ///< flush-to-zero and denormals-are-zero (what -ffast-math programs set)
-  bool traps;      ///< invalid, division by zero and overflow unmasked (SIGFPE on each)
-};
-
-const Environment kEnvironments[] = {
-    {"upward", FE_UPWARD, false, false},
-    {"downward", FE_DOWNWARD, false, false},
-    {"towardzero", FE_TOWARDZERO, false, false},
-    {"ftz_daz", FE_TONEAREST, true, false},
-    {"ftz_daz_upward", FE_UPWARD, true, false},
-    {"traps", FE_TONEAREST, false, true},
-};
-
-/// The control state of the calling thread (status flags excluded).
-struct ControlState {
-  unsigned mxcsr = 0;
-  unsigned x87 = 0;
-  int rounding = 0;
-  bool operator==(const ControlState& o) const {
-    return mxcsr == o.mxcsr && x87 == o.x87 && rounding == o.rounding;
-  }
-};
-
-ControlState control_state() {
-  ControlState s;
-#ifdef EXACTCCD_TEST_X86_64
-  s.mxcsr = _mm_getcsr() & 0xFFC0u;
-  unsigned short cw = 0;
-  __asm__ volatile("fnstcw %0" : "=m"(cw));
-  s.x87 = cw;
-#endif
-  s.rounding = std::fegetround();
-  return s;
-}
-
-std::string describe(const ControlState& s) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "mxcsr control 0x%x, x87 0x%x, fegetround %d", s.mxcsr, s.x87, s.rounding);
-  return buf;
-}
-
-/// Whether the platform lets the test install the environment.
-bool supported(const Environment& e) {
-#ifdef EXACTCCD_TEST_X86_64
-  (void)e;
-  return true;
-#else
-  return !e.ftz_daz && !e.traps;
-#endif
-}
-
-/// Installs e on the calling thread (from the default environment).
-void install(const Environment& e) {
-  std::fesetenv(FE_DFL_ENV);
-  std::fesetround(e.rounding);
-#ifdef EXACTCCD_TEST_X86_64
-  if (e.ftz_daz) _mm_setcsr(_mm_getcsr() | 0x8040u);  // FTZ (bit 15), DAZ (bit 6)
-  if (e.traps) feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
-#endif
-}
-
-/// Back to the default environment at the end of a scope (also when an assertion returns).
-struct RestoreDefault {
-  ~RestoreDefault() { std::fesetenv(FE_DFL_ENV); }
-};
+using testing::control_state;
+using testing::ControlState;
+using testing::describe;
+using testing::Environment;
+using testing::install;
+using testing::kEnvironments;
+using testing::RestoreDefault;
+using testing::supported;
 
 // ---- the data -----------------------------------------------------------------------------
 

@@ -1,7 +1,7 @@
 // Every rigid entry point gives the same answers and TOIs whatever floating-point environment
 // the calling thread is in (directed rounding, flush-to-zero and denormals-are-zero, unmasked
 // exceptions), and leaves that environment as it found it, also when it throws (docs/design.md
-// 8 and 9.4). The environments and the control-state check are those of test_fp_environment.
+// 8 and 9.4). The environments and the control-state check: tests/fp_environments.hpp.
 #include <gtest/gtest.h>
 
 #include <cfenv>
@@ -16,68 +16,21 @@
 #include "fuzz/rigid_families.hpp"
 #include "io/rigid_csv.hpp"
 #include "rigid/rigid_layout.hpp"
+#include "tests/fp_environments.hpp"
 
-#if defined(__x86_64__) || defined(_M_X64)
-#include <xmmintrin.h>
-#define EXACTCCD_TEST_X86_64 1
-#endif
 
 namespace exactccd {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Environment {
-  const char* name;
-  int rounding;
-  bool ftz_daz;
-  bool traps;
-};
-const Environment kEnvironments[] = {
-    {"upward", FE_UPWARD, false, false},    {"downward", FE_DOWNWARD, false, false},
-    {"towardzero", FE_TOWARDZERO, false, false}, {"ftz_daz", FE_TONEAREST, true, false},
-    {"ftz_daz_upward", FE_UPWARD, true, false}, {"traps", FE_TONEAREST, false, true},
-};
-
-struct ControlState {
-  unsigned mxcsr = 0, x87 = 0;
-  int rounding = 0;
-  bool operator==(const ControlState& o) const { return mxcsr == o.mxcsr && x87 == o.x87 && rounding == o.rounding; }
-};
-
-ControlState control_state() {
-  ControlState s;
-#ifdef EXACTCCD_TEST_X86_64
-  s.mxcsr = _mm_getcsr() & 0xFFC0u;
-  unsigned short cw = 0;
-  __asm__ volatile("fnstcw %0" : "=m"(cw));
-  s.x87 = cw;
-#endif
-  s.rounding = std::fegetround();
-  return s;
-}
-
-bool supported(const Environment& e) {
-#ifdef EXACTCCD_TEST_X86_64
-  (void)e;
-  return true;
-#else
-  return !e.ftz_daz && !e.traps;
-#endif
-}
-
-void install(const Environment& e) {
-  std::fesetenv(FE_DFL_ENV);
-  std::fesetround(e.rounding);
-#ifdef EXACTCCD_TEST_X86_64
-  if (e.ftz_daz) _mm_setcsr(_mm_getcsr() | 0x8040u);
-  if (e.traps) feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
-#endif
-}
-
-struct Restore {
-  ~Restore() { std::fesetenv(FE_DFL_ENV); }
-};
+using testing::control_state;
+using testing::ControlState;
+using testing::Environment;
+using testing::install;
+using testing::kEnvironments;
+using testing::RestoreDefault;
+using testing::supported;
 
 /// A rigid query of either kind with its question.
 struct Case {
@@ -170,7 +123,7 @@ TEST_P(RigidEveryEnvironment, QueriesGiveDefaultAnswersAndLeaveTheEnvironment) {
     for (const Case& c : cases()) r.push_back(cxx(c, Method::filtered, false));
     return r;
   }();
-  const Restore restore;
+  const RestoreDefault restore;
   int checked = 0;
   for (std::size_t i = 0; i < cases().size(); ++i) {
     const Case& c = cases()[i];
@@ -190,7 +143,7 @@ TEST_P(RigidEveryEnvironment, QueriesGiveDefaultAnswersAndLeaveTheEnvironment) {
 TEST_P(RigidEveryEnvironment, BadInputThrowsAndLeavesTheEnvironment) {
   const Environment& e = GetParam();
   if (!supported(e)) GTEST_SKIP();
-  const Restore restore;
+  const RestoreDefault restore;
   RigidVertexFaceQuery q{{{0, 0, 0}, {1, 0, 0, 0}}, {{0, 0, 0}, {-2, 0, 0, 0}}, {{0, 0, 0}, {1, 0, 0, 0}},
                          {{0, 0, 0}, {1, 0, 0, 0}}, {1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   install(e);

@@ -139,38 +139,14 @@ int run_check(int argc, char** argv) {
       t.fp += r && !d.queries.truth[i];
       t.fn += !r && d.queries.truth[i];
     }
-    if (answers) {
+    const CheckRecord record{d.name, kind_name(d.kind), nullptr, method_name(method), t.queries, t.positives, t.fp, t.fn,
+                             t.queries ? 1e6 * seconds / t.queries : 0.0, linear_stage_counts(stages)};
+    if (answers)
       print_answers(result, want_toi);
-    } else if (json) {
-      char buf[4096];
-      std::snprintf(buf, sizeof buf,
-                    "%s  {\"file\": %s, \"kind\": \"%s\", \"method\": \"%s\", \"queries\": %zu, "
-                    "\"positives\": %zu, \"fp\": %zu, \"fn\": %zu, \"us_per_query\": %.3f, \"stages\": "
-                    "{\"volume_exclusion\": %llu, \"static_predicates\": %llu, \"separating_direction\": %llu, \"interval\": %llu, \"fixed_integer\": %llu, \"integer\": %llu, \"exact\": %llu}}",
-                    json_items.empty() ? "" : ",\n", json_string(d.name).c_str(), kind_name(d.kind).c_str(),
-                    method_name(method).c_str(), t.queries, t.positives, t.fp, t.fn,
-                    t.queries ? 1e6 * seconds / t.queries : 0.0,
-                    static_cast<unsigned long long>(stages.volume_exclusion),
-                    static_cast<unsigned long long>(stages.static_predicates),
-                    static_cast<unsigned long long>(stages.separating_direction),
-                    static_cast<unsigned long long>(stages.interval),
-                    static_cast<unsigned long long>(stages.fixed_integer),
-                    static_cast<unsigned long long>(stages.integer),
-                    static_cast<unsigned long long>(stages.exact));
-      json_items += buf;
-    } else {
-      std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", d.name.c_str(), kind_name(d.kind).c_str(),
-                  t.queries, t.positives, t.fp, t.fn, t.queries ? 1e6 * seconds / t.queries : 0.0);
-      if (stats && method == tools::Method::filtered)
-        std::printf("  stages: volume_exclusion %llu, static_predicates %llu, separating_direction %llu, interval %llu, fixed_integer %llu, integer %llu, exact %llu\n",
-                    static_cast<unsigned long long>(stages.volume_exclusion),
-                    static_cast<unsigned long long>(stages.static_predicates),
-                    static_cast<unsigned long long>(stages.separating_direction),
-                    static_cast<unsigned long long>(stages.interval),
-                    static_cast<unsigned long long>(stages.fixed_integer),
-                    static_cast<unsigned long long>(stages.integer),
-                    static_cast<unsigned long long>(stages.exact));
-    }
+    else if (json)
+      append_json_record(json_items, record);
+    else
+      print_check_row(record, stats && method == tools::Method::filtered);
     total.queries += t.queries;
     total.positives += t.positives;
     total.fp += t.fp;

@@ -338,6 +338,37 @@ unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
   return used;
 }
 
+StageCounts linear_stage_counts(const StageCounters& s) {
+  return {{"volume_exclusion", s.volume_exclusion}, {"static_predicates", s.static_predicates},
+          {"separating_direction", s.separating_direction}, {"interval", s.interval},
+          {"fixed_integer", s.fixed_integer}, {"integer", s.integer}, {"exact", s.exact}};
+}
+
+void append_json_record(std::string& items, const CheckRecord& rec) {
+  char buf[512];
+  std::string item = std::string(items.empty() ? "" : ",\n") + "  {\"file\": " + json_string(rec.file) +
+                     ", \"kind\": \"" + rec.kind + "\"";
+  if (rec.motion) item += std::string(", \"motion\": \"") + rec.motion + "\"";
+  std::snprintf(buf, sizeof buf,
+                ", \"method\": \"%s\", \"queries\": %zu, \"positives\": %zu, \"fp\": %zu, \"fn\": %zu, "
+                "\"us_per_query\": %.3f, \"stages\": {",
+                rec.method.c_str(), rec.queries, rec.positives, rec.fp, rec.fn, rec.us_per_query);
+  item += buf;
+  for (std::size_t k = 0; k < rec.stages.size(); ++k)
+    item += std::string(k ? ", " : "") + "\"" + rec.stages[k].first + "\": " + std::to_string(rec.stages[k].second);
+  items += item + "}}";
+}
+
+void print_check_row(const CheckRecord& rec, bool stages_line) {
+  std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", rec.file.c_str(), rec.kind.c_str(), rec.queries,
+              rec.positives, rec.fp, rec.fn, rec.us_per_query);
+  if (!stages_line) return;
+  std::string line = "  stages: ";
+  for (std::size_t k = 0; k < rec.stages.size(); ++k)
+    line += std::string(k ? ", " : "") + rec.stages[k].first + " " + std::to_string(rec.stages[k].second);
+  std::printf("%s\n", line.c_str());
+}
+
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {

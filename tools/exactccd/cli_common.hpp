@@ -7,6 +7,7 @@
 #include <utility>
 #include <optional>
 #include <stdexcept>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -155,6 +156,29 @@ void require_double_range(const Dataset& d, tools::Method method);
 /// Prints `check --answers`' lines for `answers`: "0" for no collision, "1" with want_toi
 /// "1 LO HI" (17 significant digits: read back as the same doubles).
 void print_answers(const std::vector<std::optional<TimeInterval>>& answers, bool want_toi);
+
+/// The stage counts of a check report, in report order: each counter's name and value.
+using StageCounts = std::vector<std::pair<const char*, std::uint64_t>>;
+
+/// The linear filtered method's stages as check reports them.
+StageCounts linear_stage_counts(const StageCounters& s);
+
+/// One file's result in a check report (check, check --motion rigid).
+struct CheckRecord {
+  std::string file;               ///< the file as printed
+  std::string kind;               ///< its kind's short name
+  const char* motion = nullptr;   ///< "rigid", or nullptr for linear motion (no "motion" key)
+  std::string method;             ///< the method's name
+  std::size_t queries = 0, positives = 0, fp = 0, fn = 0;
+  double us_per_query = 0;
+  StageCounts stages;             ///< the method's stages, in report order
+};
+
+/// Appends rec to the items of a --json report ("  {...}", after ",\n" unless the first).
+void append_json_record(std::string& items, const CheckRecord& rec);
+
+/// Prints rec's row of the text report and, with `stages_line`, its stage counts below it.
+void print_check_row(const CheckRecord& rec, bool stages_line);
 
 /// The answer of one method on query i: the TOI when it collides. Rational queries that are
 /// not exact doubles run the exact path (the baselines round them to the nearest doubles).

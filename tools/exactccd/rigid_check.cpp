@@ -63,19 +63,6 @@ Method rigid_method(tools::Method m) {
                    " is a baseline for linear queries; rigid queries take filtered or exact");
 }
 
-namespace {
-
-std::string stage_text(const StageCounters& s) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "separating_direction %llu, interval %llu, integer %llu, exact %llu",
-                static_cast<unsigned long long>(s.separating_direction), static_cast<unsigned long long>(s.interval),
-                static_cast<unsigned long long>(s.integer), static_cast<unsigned long long>(s.exact));
-  return buf;
-}
-
-}  // namespace
-
 int run_rigid_check(const ParsedOptions& options) {
   const std::optional<QueryKind> kind = kind_of(options);
   const Method method = rigid_method(parse_method(options.text("--method")));
@@ -124,25 +111,18 @@ int run_rigid_check(const ParsedOptions& options) {
       fn += !r && truth;
     }
     const double us = 1e6 * seconds / static_cast<double>(end - begin);
-    if (answers) {
+    const StageCounts rigid_stages{{"separating_direction", stages.separating_direction},
+                                   {"interval", stages.interval},
+                                   {"integer", stages.integer},
+                                   {"exact", stages.exact}};
+    const CheckRecord record{d.path, kind_name(d.kind), "rigid", method == Method::filtered ? "filtered" : "exact",
+                             end - begin, positives, fp, fn, us, rigid_stages};
+    if (answers)
       print_answers(result, want_toi);
-    } else if (json) {
-      char buf[4096];
-      std::snprintf(buf, sizeof buf,
-                    "%s  {\"file\": %s, \"kind\": \"%s\", \"motion\": \"rigid\", \"method\": \"%s\", \"queries\": %zu, "
-                    "\"positives\": %zu, \"fp\": %zu, \"fn\": %zu, \"us_per_query\": %.3f, \"stages\": "
-                    "{\"separating_direction\": %llu, \"interval\": %llu, \"integer\": %llu, \"exact\": %llu}}",
-                    json_items.empty() ? "" : ",\n", json_string(d.path).c_str(), kind_name(d.kind).c_str(),
-                    method == Method::filtered ? "filtered" : "exact", end - begin, positives, fp, fn, us,
-                    static_cast<unsigned long long>(stages.separating_direction),
-                    static_cast<unsigned long long>(stages.interval), static_cast<unsigned long long>(stages.integer),
-                    static_cast<unsigned long long>(stages.exact));
-      json_items += buf;
-    } else {
-      std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", d.path.c_str(), kind_name(d.kind).c_str(), end - begin,
-                  positives, fp, fn, us);
-      if (stats && method == Method::filtered) std::printf("  stages: %s\n", stage_text(stages).c_str());
-    }
+    else if (json)
+      append_json_record(json_items, record);
+    else
+      print_check_row(record, stats && method == Method::filtered);
     total_queries += end - begin, total_positives += positives, total_fp += fp, total_fn += fn;
     total_seconds += seconds;
   }
