@@ -86,8 +86,8 @@ std::optional<TimeInterval> answer_rational_query(const RationalQuery& q, const 
   return separation::exact_toi(q, p);
 }
 
-// The entry points of every kind (kinds::for_each_kind; tests/api/test_entry_points
-// calls each through the list, so that a kind missing here fails to link).
+// The entry points of every kind (tests/api/test_interfaces calls each of both through
+// kinds::for_each_kind, so that a kind missing here fails to link).
 template std::optional<TimeInterval> answer_query(const VertexFaceQuery&, const CcdParams&, Method, bool, StageCounters*);
 template std::optional<TimeInterval> answer_query(const EdgeEdgeQuery&, const CcdParams&, Method, bool, StageCounters*);
 template std::optional<TimeInterval> answer_query(const PointEdgeQuery&, const CcdParams&, Method, bool, StageCounters*);

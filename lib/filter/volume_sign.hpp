@@ -36,13 +36,10 @@ class VolumeSigns {
   template <class Query>
   void hoist(const Query& q);
 
-  // V = det[A, B, C], A, B, C the vectors from the kind's volume row `base` to its rows u, v, w.
-  // A coordinate of such a vector at t is numeric::double_word::difference_at: d0 + t (d1 - d0),
-  // d0 and d1 the exact differences at t0 and t1 (GeometryAt::vector). d0 (`start_`) and
-  // d1 - d0 (`change_`) do not depend on t: formed once here by the same operations, so each
-  // sign_at computes the same values as from GeometryAt, with a third of the work.
+  // V = det[A, B, C], A, B, C the vectors from the kind's volume row `base` to its rows u, v, w
+  // (numeric::moving_vector: the parts that do not depend on t formed once).
   using Approx = numeric::double_word::Approx;
-  std::array<Vec3T<Approx>, 3> start_{}, change_{};
+  std::array<Vec3T<numeric::double_word::MovingDifference>, 3> vectors_{};
   bool usable_ = false;  // false: the scaled rows are not usable (ScaledRows::usable)
 };
 

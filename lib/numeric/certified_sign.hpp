@@ -101,6 +101,25 @@ class ScaledRows {
 
 /// A query's points at one double time t, in double-double, from its scaled rows (ScaledRows,
 /// which must outlive this object).
+/// The vector from point i to point j of scaled rows (the points at t0, then at t1), moving
+/// linearly over the step: its parts that do not depend on t, formed once
+/// (double_word::MovingDifference), for a caller that evaluates it at many t.
+template <std::size_t N>
+Vec3T<double_word::MovingDifference> moving_vector(const ScaledRows<N>& scaled, int i, int j) {
+  constexpr std::size_t P = N / 2;
+  const std::array<Vec3, N>& y = scaled.rows();
+  const Vec3 &u0 = y[static_cast<std::size_t>(i)], &u1 = y[static_cast<std::size_t>(i) + P];
+  const Vec3 &v0 = y[static_cast<std::size_t>(j)], &v1 = y[static_cast<std::size_t>(j) + P];
+  using double_word::moving_difference;
+  return {moving_difference(u0.x, v0.x, u1.x, v1.x), moving_difference(u0.y, v0.y, u1.y, v1.y),
+          moving_difference(u0.z, v0.z, u1.z, v1.z)};
+}
+
+/// A moving vector (moving_vector) at time t.
+inline Vec3T<double_word::Approx> vector_at(const Vec3T<double_word::MovingDifference>& v, double t) {
+  return {v.x.at(t), v.y.at(t), v.z.at(t)};
+}
+
 template <std::size_t N>
 class GeometryAt {
  public:
@@ -114,15 +133,7 @@ class GeometryAt {
   bool usable() const { return t_ >= 0 && t_ <= 1 && scaled_.usable(); }
 
   /// The vector from point i to point j at t.
-  Vec3T<Approx> vector(int i, int j) const {
-    constexpr std::size_t P = N / 2;
-    const std::array<Vec3, N>& y = scaled_.rows();
-    const Vec3 &u0 = y[static_cast<std::size_t>(i)], &u1 = y[static_cast<std::size_t>(i) + P];
-    const Vec3 &v0 = y[static_cast<std::size_t>(j)], &v1 = y[static_cast<std::size_t>(j) + P];
-    using double_word::difference_at;
-    return {difference_at(u0.x, v0.x, u1.x, v1.x, t_), difference_at(u0.y, v0.y, u1.y, v1.y, t_),
-            difference_at(u0.z, v0.z, u1.z, v1.z, t_)};
-  }
+  Vec3T<Approx> vector(int i, int j) const { return vector_at(moving_vector(scaled_, i, j), t_); }
 
   /// d^2, scaled as the coordinates.
   const Approx& d_squared() const { return scaled_.d_squared(); }

@@ -114,13 +114,28 @@ inline Approx scaled(const Approx& x, double t) {
   return {z, std::fabs(t) * x.error + kRelative * magnitude(z) + kAbsolute};
 }
 
-/// A coordinate difference v - u at t0 and at t1 exactly (TwoSum: no overflow when the inputs
-/// are below 2^1022 in magnitude), and its value at time t: (v0 - u0) + t ((v1 - u1) -
-/// (v0 - u0)), as relative_motion in contact_polynomials.hpp.
-inline Approx difference_at(double u0, double v0, double u1, double v1, double t) {
+/// A coordinate difference v - u moving linearly over the step: its parts that do not depend
+/// on t, formed once (moving_difference), and its value at a time t (at).
+struct MovingDifference {
+  Approx start;   ///< v0 - u0, exactly (TwoSum)
+  Approx change;  ///< (v1 - u1) - (v0 - u0), with its error bound
+
+  /// The value at time t: (v0 - u0) + t ((v1 - u1) - (v0 - u0)), as relative_motion in
+  /// contact_polynomials.hpp.
+  Approx at(double t) const { return start + scaled(change, t); }
+};
+
+/// The difference v - u whose values at t0 and t1 are v0 - u0 and v1 - u1, each exact
+/// (TwoSum: no overflow when the inputs are below 2^1022 in magnitude).
+inline MovingDifference moving_difference(double u0, double v0, double u1, double v1) {
   const Approx d0{two_sum(v0, -u0), 0.0};
   const Approx d1{two_sum(v1, -u1), 0.0};
-  return d0 + scaled(d1 - d0, t);
+  return {d0, d1 - d0};
+}
+
+/// The difference v - u at time t (moving_difference, at): for a single t.
+inline Approx difference_at(double u0, double v0, double u1, double v1, double t) {
+  return moving_difference(u0, v0, u1, v1).at(t);
 }
 
 /// The certified sign (-1 or 1) of the exact quantity v stands for, or 0 when the bound does
