@@ -12,7 +12,7 @@
 // at d = 0 and d = 1e-3 (absolute; the naive cubic answers the contact question only, so its
 // loop is the same at both d: the ratio is the cost of the exact answer against the cubic's).
 //
-//   build/batch_bench [--rounds N] [--data DIR] [--funnel DIR]
+//   build/batch_bench [--rounds N] [--only WORKLOAD] [--data DIR] [--funnel DIR]
 // prints one row per workload and d: queries, colliding share, the median ns per query of each
 // method and the ratios find_collisions / naive and earliest_toi / naive.
 #include <algorithm>
@@ -162,12 +162,14 @@ void measure(const Workload& w, double d, int rounds) {
 int main(int argc, char** argv) {
   int rounds = 7;
   fs::path data = EXACTCCD_DATA_DIR, funnel = EXACTCCD_SCALABLE_SAMPLE_DIR;
+  std::string only;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--rounds")) rounds = std::max(1, std::atoi(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--only")) only = argv[i + 1];
     else if (!std::strcmp(argv[i], "--data")) data = argv[i + 1];
     else if (!std::strcmp(argv[i], "--funnel")) funnel = argv[i + 1];
     else {
-      std::fprintf(stderr, "usage: batch_bench [--rounds N] [--data DIR] [--funnel DIR]\n");
+      std::fprintf(stderr, "usage: batch_bench [--rounds N] [--only WORKLOAD] [--data DIR] [--funnel DIR]\n");
       return 2;
     }
   }
@@ -182,5 +184,6 @@ int main(int argc, char** argv) {
   std::printf("%-7s %-6s %8s %7s %9s %9s %9s %9s %9s   (ns/query, medians of %d rounds, 1 thread)\n", "work",
               "d", "queries", "collide", "naive", "find", "earliest", "find/nv", "toi/nv", rounds);
   for (const double d : {0.0, 1e-3})
-    for (const auto& w : workloads) measure(w, d, rounds);
+    for (const auto& w : workloads)
+      if (only.empty() || only == w.name) measure(w, d, rounds);
 }
