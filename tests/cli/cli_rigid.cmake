@@ -1,4 +1,4 @@
-# CLI contract tests of the rigid motion model (issue 24), one CTest test per case:
+# CLI contract tests of the rigid motion model (issues 24, 28), one CTest test per case:
 #   cmake -DEXE=<exactccd> -DSOURCE_DIR=<repository> -DWORK=<scratch dir> -DCASE=<case> -P cli_rigid.cmake
 # `check --motion rigid --kind vf|ee [--min-distance D] [--tmax T] [--toi] [--answers] FILE.csv`
 # with the spellings of the issue; errors name the file and the line and exit with code 2.
@@ -184,10 +184,11 @@ elseif(CASE STREQUAL "rigid_bench")
   endif()
 
 elseif(CASE STREQUAL "rigid_generate_fresh")
-  # data/rigid is what `exactccd generate rigid` writes now (the command of data/rigid/README.md).
-  run(generate rigid --seed 1 --max-queries 2000 --out ${WORK})
+  # data/rigid is what `exactccd generate families sim --motion rigid` writes now (the command
+  # of data/rigid/README.md).
+  run(generate families sim --motion rigid --seed 1 --max-queries 2000 --out ${WORK})
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "generate rigid: exit ${rc}\n${err}")
+    message(FATAL_ERROR "generate families sim --motion rigid: exit ${rc}\n${err}")
   endif()
   file(GLOB files RELATIVE ${SOURCE_DIR}/data/rigid ${SOURCE_DIR}/data/rigid/*.csv)
   foreach(f IN LISTS files)
@@ -195,6 +196,55 @@ elseif(CASE STREQUAL "rigid_generate_fresh")
     file(READ ${SOURCE_DIR}/data/rigid/${f} committed)
     if(NOT fresh STREQUAL committed)
       message(FATAL_ERROR "data/rigid/${f} is stale: regenerate it with the command of data/rigid/README.md")
+    endif()
+  endforeach()
+
+elseif(CASE STREQUAL "motion_option")
+  # --motion on each of check, bench and generate (one code path each, tools/exactccd/motions.hpp):
+  # every help describes it, linear is the default, each subcommand reaches the rigid model's
+  # reader, table and query sets, and refuses what that model has not.
+  foreach(sub check bench generate)
+    run(${sub} --help)
+    if(NOT rc EQUAL 0 OR NOT out MATCHES "--motion MODEL +[^\n]*linear[^\n]*rigid")
+      message(FATAL_ERROR "${sub} --help does not describe --motion:\n${out}")
+    endif()
+  endforeach()
+  set(small ${SOURCE_DIR}/tests/data/small-vertex-face.csv)
+  run(check --toi --answers ${small})
+  set(default_out "${out}")
+  run(check --motion linear --toi --answers ${small})
+  if(NOT rc EQUAL 0 OR NOT out STREQUAL default_out OR out STREQUAL "")
+    message(FATAL_ERROR "check --motion linear: '${out}', the default gives '${default_out}'\n${err}")
+  endif()
+  run(check --motion rigid --json --kind vf ${closed})
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "\"kind\": \"vf\", \"motion\": \"rigid\", \"method\": \"filtered\", \"queries\": 5, \"positives\": 4, \"fp\": 0, \"fn\": 0, \"us_per_query\": [0-9.]+, \"stages\": {\"separating_direction\": ")
+    message(FATAL_ERROR "check --motion rigid --json:\n${out}\n${err}")
+  endif()
+  run(check --motion rigid --kind vf --truth ${WORK}/t.json ${closed})
+  expect_error(2 "check --motion rigid --truth" "--truth is for linear query files")
+  run(bench --motion rigid --repetitions 1 --json - ${closed})
+  expect_error(2 "bench --motion rigid --json" "--json is not available for rigid queries")
+  run(bench --motion rigid --repetitions 1 --kind pe ${closed})
+  expect_error(2 "bench --motion rigid --kind pe" "answers the kinds vf and ee")
+  run(generate catalogue --motion rigid --out ${WORK}/gen)
+  expect_error(2 "generate catalogue --motion rigid" "generate --motion rigid: unknown set 'catalogue' .expected families or sim")
+  run(generate --motion rigid --out ${WORK}/gen)
+  expect_error(2 "generate --motion rigid" "expected families or sim")
+  run(generate sim --motion rigid --scene cloth --out ${WORK}/gen)
+  expect_error(2 "generate sim --motion rigid --scene cloth" "no rigid scene 'cloth' .the scenes: box, rings.")
+  if(EXISTS ${WORK}/gen)
+    message(FATAL_ERROR "a refused generate wrote ${WORK}/gen")
+  endif()
+  # The rigid families alone, as data/rigid holds them (a fraction of a second).
+  run(generate families --motion rigid --seed 1 --out ${WORK}/families)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "rigid-families-vertex-face.csv: 145 queries, 75 positives\n.*rigid-families-edge-edge.csv: 88 queries, 59 positives\n$")
+    message(FATAL_ERROR "generate families --motion rigid: exit ${rc}\n${out}\n${err}")
+  endif()
+  foreach(kind vertex-face edge-edge)
+    file(READ ${WORK}/families/rigid-families-${kind}.csv fresh)
+    file(READ ${SOURCE_DIR}/data/rigid/rigid-families-${kind}.csv committed)
+    if(NOT fresh STREQUAL committed)
+      message(FATAL_ERROR "generate families --motion rigid: rigid-families-${kind}.csv differs from data/rigid's")
     endif()
   endforeach()
 

@@ -1,23 +1,18 @@
-// exactccd bench: every method on the same loaded queries, several repetitions.
+// exactccd bench: the methods on the same loaded queries, several repetitions, interleaved; one
+// code path for every motion model (motions.hpp), whose arms and table differ.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <limits>
-#include <filesystem>
-#include <optional>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 #include "cli_common.hpp"
-#include "output_file.hpp"
-#include "rigid_cli.hpp"
+#include "motions.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 /// The most repetitions: a bound on the run time, not on anything's size.
 constexpr long long kMaxRepetitions = 100000;
@@ -57,7 +52,9 @@ const CommandSpec& command() {
         "gmp_cgal and the stages of the first repetition.\n";
     c.options = {
         kind_option("query kind of the files (default: inferred from the path)"),
-        motion_option(),
+        motion_option("linear: benchmark CSV files, every method of --methods; rigid: rigid\n"
+                      "query files, the rigid filtered method against the linear filtered\n"
+                      "method on the linearised queries (see above)"),
         integer_option("--repetitions", "N", 1, kMaxRepetitions, "5", "repetitions per dataset and method"),
         choice_list_option("--methods", "LIST", all_method_names(), "naive,filtered,exact",
                            "the methods to run"),
@@ -77,33 +74,6 @@ const CommandSpec& command() {
   return spec;
 }
 
-struct Result {
-  std::string dataset, kind, method;
-  double min_distance = 0;  ///< d, or the fraction of the box size when relative
-  bool relative = false;
-  double tmax = 1;
-  std::size_t queries = 0, fp = 0, fn = 0;
-  std::size_t truth_disagrees_with_exact = 0;  ///< the dataset's truth column vs Method::exact
-  double mean_ns = 0, median_ns = 0;
-  StageCounters stages;
-  std::uint64_t exact_fallbacks = 0;
-};
-
-/// The largest extent of a query's bounding box over all its points at t0 and t1.
-double box_size(const std::array<Vec3, 8>& rows, int count) {
-  double size = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    double lo = 0, hi = 0;
-    for (int k = 0; k < count; ++k) {
-      const double c = axis == 0 ? rows[k].x : axis == 1 ? rows[k].y : rows[k].z;
-      lo = k == 0 ? c : std::min(lo, c);
-      hi = k == 0 ? c : std::max(hi, c);
-    }
-    size = std::max(size, hi - lo);
-  }
-  return size;
-}
-
 /// The comma-separated list of --min-distances (each a finite number >= 0).
 std::vector<double> parse_distances(const std::string& list) {
   std::vector<double> out;
@@ -121,60 +91,88 @@ std::vector<double> parse_distances(const std::string& list) {
   return out;
 }
 
+BenchSettings bench_settings(const ParsedOptions& options) {
+  BenchSettings s;
+  s.kind = kind_of(options);
+  s.repetitions = static_cast<int>(options.integer("--repetitions"));
+  for (const std::string& m : options.list("--methods")) s.methods.push_back(parse_method(m));
+  s.json = options.has("--json") ? options.text("--json") : "";
+  s.distances = parse_distances(options.text("--min-distances"));
+  s.relative = options.flag("--relative");
+  s.tmax = options.real("--tmax");
+  s.files = options.positionals();
+  return s;
+}
+
+/// The files given, else the model's bundled ones, read (and every method's limits checked at
+/// every d) before anything is printed.
+template <class Motion>
+std::vector<typename Motion::Dataset> load_files(const BenchSettings& s) {
+  const std::vector<std::string> files = s.files.empty() ? Motion::bundled_files() : s.files;
+  if (files.empty())
+    throw UsageError(subcommand_name<Motion>("bench") + ": no dataset given and no bundled dataset found");
+  std::vector<typename Motion::Dataset> datasets;
+  for (const std::string& f : files) {
+    datasets.push_back(Motion::load(f, s.kind, {}));
+    for (const tools::Method m : s.methods)
+      for (const double d : s.distances) Motion::require_answers(datasets.back(), m, CcdParams{d, s.tmax});
+  }
+  return datasets;
+}
+
+/// Times every arm on n queries, `repetitions` times, the arms interleaved within a repetition
+/// (so that drift affects them alike); keeps each arm's first answers and stage counts.
+std::vector<ArmRun> time_arms(const std::vector<BenchArm>& arms, std::size_t n, int repetitions) {
+  std::vector<ArmRun> runs(arms.size());
+  for (int rep = 0; rep < repetitions; ++rep)
+    for (std::size_t a = 0; a < arms.size(); ++a) {
+      std::vector<bool> answers(n);
+      StageCounters counters;
+      const double start = now_seconds();
+      arms[a](answers, counters);
+      runs[a].ns_per_query.push_back(1e9 * (now_seconds() - start) / static_cast<double>(n));
+      if (rep == 0) {
+        runs[a].answers = std::move(answers);
+        runs[a].stages = counters;
+      }
+    }
+  return runs;
+}
+
+/// bench for one motion model: per dataset and d, each query's question (d absolute, or relative
+/// to its box), the reference answers, the arms timed, a report.
+template <class Motion>
+int bench(const BenchSettings& s) {
+  typename Motion::BenchTable table(s);
+  const std::vector<typename Motion::Dataset> datasets = load_files<Motion>(s);
+  table.header();
+  for (const auto& d : datasets) {
+    const typename Motion::BenchCase c(d, s);
+    const std::size_t n = d.queries.size();
+    for (const double distance : s.distances) {
+      std::vector<CcdParams> params(n);  // each query's question, set before timing
+      for (std::size_t i = 0; i < n; ++i) params[i] = {s.relative ? distance * c.box_size(i) : distance, s.tmax};
+      const std::vector<bool> reference = c.reference(params, distance == 0 && s.tmax == 1);
+      table.add(c, distance, reference, time_arms(c.arms(params), n, s.repetitions));
+    }
+  }
+  table.finish();
+  return kExitOk;
+}
+
+}  // namespace
+
+double mean(const std::vector<double>& v) {
+  double s = 0;
+  for (const double x : v) s += x;
+  return s / static_cast<double>(v.size());
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
-
-std::vector<std::string> bundled_files() {
-  std::vector<std::string> files;
-  const fs::path sample = fs::path(EXACTCCD_SAMPLE_QUERIES_DIR) / "unit-tests";
-  for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
-                        "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"})
-    if (fs::exists(sample / f)) files.push_back((sample / f).string());
-  const fs::path sim = fs::path(EXACTCCD_DATA_DIR) / "sim";
-  if (fs::is_directory(sim)) {
-    std::vector<std::string> sims;
-    for (const auto& e : fs::directory_iterator(sim))
-      if (e.path().extension() == ".csv") sims.push_back(e.path().string());
-    std::sort(sims.begin(), sims.end());
-    files.insert(files.end(), sims.begin(), sims.end());
-  }
-  return files;
-}
-
-/// A short dataset name: "unit-tests/vertex-face/data_0_0" or the file's stem for others.
-std::string dataset_name(const std::string& path) {
-  const fs::path p(path);
-  const std::string parent = p.parent_path().filename().string();
-  if (parent == "vertex-face" || parent == "edge-edge")
-    return p.parent_path().parent_path().filename().string() + "/" + parent + "/" + p.stem().string();
-  return p.stem().string();
-}
-
-void write_json(std::ostream& out, const std::vector<Result>& results) {
-  out << "[\n";
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const Result& r = results[i];
-    out << "  {\"dataset\": " << json_string(r.dataset) << ", \"kind\": \"" << r.kind << "\", \"method\": \""
-        << r.method << "\", \"min_distance\": " << r.min_distance << ", \"relative\": "
-        << (r.relative ? "true" : "false") << ", \"tmax\": " << r.tmax << ", \"queries\": " << r.queries << ", \"mean_ns\": " << r.mean_ns
-        << ", \"median_ns\": " << r.median_ns << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn
-        << ", \"fp_fn_against\": \""
-        << (r.min_distance == 0 && r.tmax == 1 ? "file truth column" : "Method::exact at the same d and tmax")
-        << "\", \"truth_disagrees_with_exact\": "
-        << r.truth_disagrees_with_exact
-        << ", \"exact_fallbacks\": " << r.exact_fallbacks << ", \"stages\": {\"volume_exclusion\": "
-        << r.stages.volume_exclusion << ", \"static_predicates\": " << r.stages.static_predicates
-        << ", \"separating_direction\": " << r.stages.separating_direction << ", \"interval\": " << r.stages.interval
-        << ", \"fixed_integer\": " << r.stages.fixed_integer << ", \"integer\": " << r.stages.integer << ", \"exact\": " << r.stages.exact << "}}"
-        << (i + 1 < results.size() ? "," : "") << "\n";
-  }
-  out << "]\n";
-}
-
-}  // namespace
 
 int run_bench(int argc, char** argv) {
   const ParsedOptions options = parse_options(command(), argc, argv);
@@ -182,129 +180,8 @@ int run_bench(int argc, char** argv) {
     std::cout << help_text(command());
     return kExitOk;
   }
-  const std::optional<QueryKind> kind = kind_of(options);
-  const int repetitions = static_cast<int>(options.integer("--repetitions"));
-  std::vector<tools::Method> methods;
-  for (const std::string& m : options.list("--methods")) methods.push_back(parse_method(m));
-  const std::string json = options.has("--json") ? options.text("--json") : "";
-  const std::vector<double> distances = parse_distances(options.text("--min-distances"));
-  const bool relative = options.flag("--relative");
-  const double tmax = options.real("--tmax");
-  if (rigid_motion(options)) return run_rigid_bench(options, distances, relative, tmax);
-  std::vector<std::string> files = options.positionals();
-  // An unwritable --json FILE fails now, not after the whole run.
-  std::optional<AtomicOutputFile> json_file;
-  if (!json.empty() && json != "-") json_file.emplace(json);
-  if (files.empty()) files = bundled_files();
-  if (files.empty()) throw UsageError("bench: no dataset given and no bundled dataset found");
-
-  std::vector<Dataset> datasets;
-  for (const std::string& f : files) {
-    datasets.push_back(load_dataset(f, kind));
-    datasets.back().name = dataset_name(f);
-    for (tools::Method m : methods) {
-      require_double_range(datasets.back(), m);
-      for (double d : distances) require_method_answers(m, datasets.back().kind, CcdParams{d, tmax});
-    }
-  }
-
-  FILE* table = json == "-" ? stderr : stdout;
-  std::fprintf(table, "FP and FN: against each file's truth column; truth!=exact: queries whose truth column "
-                      "disagrees with Method::exact\n");
-  std::fprintf(table, "%-34s %4s %-9s %9s %8s %10s %10s %6s %6s %12s %9s %8s  %s\n", "dataset", "kind", "method",
-               relative ? "d/box" : "d", "queries", "mean_ns", "median_ns", "FP", "FN", "truth!=exact", "exact_fb",
-               "gmp_cgal", "stages (vol/static/sep/int/fixed/gmp/exact)");
-  std::vector<Result> results;
-  for (const Dataset& d : datasets) {
-    const std::size_t n = d.queries.size();
-    // FP and FN are counted against the file's published truth column; the exact reference
-    // (Method::exact) says how far that column can be trusted.
-    std::size_t truth_disagrees_with_exact = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      truth_disagrees_with_exact +=
-          run_query(d, i, tools::Method::exact, nullptr, false).has_value() != d.queries.truth[i];
-    if (truth_disagrees_with_exact > 0)
-      std::fprintf(stderr, "exactccd bench: %s: the truth column disagrees with Method::exact on %zu of %zu "
-                           "queries: its FP and FN are against that column\n",
-                   d.path.c_str(), truth_disagrees_with_exact, n);
-    const int points = d.queries.layout.rows;
-    for (const double distance : distances) {
-      // Each query's question, set before timing.
-      std::vector<CcdParams> params(n);
-      for (std::size_t i = 0; i < n; ++i) {
-        const double size = relative ? box_size(d.doubles[i] ? *d.doubles[i] : io::nearest_double_rows(d.queries.rows[i]), points) : 1.0;
-        params[i] = CcdParams{relative ? distance * size : distance, tmax};
-      }
-      const bool contact_question = distance == 0 && tmax == 1;
-      std::vector<bool> reference = d.queries.truth;
-      if (!contact_question)
-        for (std::size_t i = 0; i < n; ++i)
-          reference[i] = run_query(d, i, tools::Method::exact, nullptr, false, params[i]).has_value();
-      std::vector<std::vector<double>> per_query_ns(methods.size());
-      std::vector<Result> rows(methods.size());
-      for (int rep = 0; rep < repetitions; ++rep) {
-        for (std::size_t m = 0; m < methods.size(); ++m) {
-          StageCounters counters;
-          std::vector<bool> answer(n);
-          const double start = now_seconds();
-          for (std::size_t i = 0; i < n; ++i)
-            answer[i] = run_query(d, i, methods[m], &counters, false, params[i]).has_value();
-          const double elapsed = now_seconds() - start;
-          per_query_ns[m].push_back(n ? 1e9 * elapsed / n : 0);
-          if (rep == 0) {
-            Result& r = rows[m];
-            r.dataset = d.name;
-            r.kind = kind_name(d.kind);
-            r.method = method_name(methods[m]);
-            r.min_distance = distance;
-            r.relative = relative;
-            r.tmax = tmax;
-            r.queries = n;
-            r.truth_disagrees_with_exact = truth_disagrees_with_exact;
-            for (std::size_t i = 0; i < n; ++i) {
-              r.fp += answer[i] && !reference[i];
-              r.fn += !answer[i] && reference[i];
-            }
-            r.stages = counters;
-            r.exact_fallbacks = methods[m] == tools::Method::exact ? n : methods[m] == tools::Method::filtered ? counters.exact : 0;
-          }
-        }
-      }
-      for (std::size_t m = 0; m < methods.size(); ++m) {
-        Result& r = rows[m];
-        double sum = 0;
-        for (double x : per_query_ns[m]) sum += x;
-        r.mean_ns = sum / per_query_ns[m].size();
-        r.median_ns = median(per_query_ns[m]);
-        std::string stages = "-";
-        std::string gmp_cgal = "-";
-        if (methods[m] == tools::Method::filtered && n) {
-          char buf[160];
-          std::snprintf(buf, sizeof buf, "%.1f%% / %.1f%% / %.1f%% / %.1f%% / %.2f%% / %.2f%% / %.3f%%",
-                        100.0 * r.stages.volume_exclusion / n, 100.0 * r.stages.static_predicates / n,
-                        100.0 * r.stages.separating_direction / n, 100.0 * r.stages.interval / n,
-                        100.0 * r.stages.fixed_integer / n, 100.0 * r.stages.integer / n,
-                        100.0 * r.stages.exact / n);
-          stages = buf;
-          gmp_cgal = std::to_string(r.stages.integer + r.stages.exact);
-        }
-        std::fprintf(table, "%-34s %4s %-9s %9.3g %8zu %10.1f %10.1f %6zu %6zu %12zu %9llu %8s  %s\n",
-                     r.dataset.c_str(), r.kind.c_str(), r.method.c_str(), r.min_distance, r.queries, r.mean_ns,
-                     r.median_ns, r.fp, r.fn, r.truth_disagrees_with_exact,
-                     static_cast<unsigned long long>(r.exact_fallbacks), gmp_cgal.c_str(), stages.c_str());
-        results.push_back(r);
-      }
-    }
-  }
-  if (!json.empty()) {
-    if (json == "-") {
-      write_json(std::cout, results);
-    } else {
-      write_json(json_file->stream(), results);
-      json_file->commit();
-    }
-  }
-  return kExitOk;
+  const BenchSettings settings = bench_settings(options);
+  return visit_motion(options, [&](auto motion) { return bench<decltype(motion)>(settings); });
 }
 
 }  // namespace exactccd::cli

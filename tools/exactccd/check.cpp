@@ -1,4 +1,4 @@
-// exactccd check: the oracle on benchmark CSV files.
+// exactccd check: the oracle on query files, one code path for every motion model (motions.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "rigid_cli.hpp"
+#include "motions.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -38,7 +38,12 @@ const CommandSpec& command() {
         "methods filtered and exact.\n";
     c.options = {
         kind_option("query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)"),
-        motion_option(),
+        motion_option(
+            "linear: every vertex on a straight line (benchmark CSV files); rigid:\n"
+            "rigid bodies turning and moving (files of one query per line, 41\n"
+            "comma-separated numbers: cA0 (3), qA0 (4: w x y z), cA1 (3), qA1 (4),\n"
+            "cB0, qB0, cB1, qB1, the body points (vf: p of A, a b c of B; ee: a0 a1\n"
+            "of A, b0 b1 of B), the truth 0 or 1; '#' starts a comment line)"),
         choice_option("--method", "NAME", all_method_names(), "filtered",
                       "filtered (exact), exact (CGAL reference; slow); baselines, NOT robust:\n"
                       "naive (textbook doubles), naive-tolerance (Bridson-style tolerance),\n"
@@ -67,10 +72,115 @@ const CommandSpec& command() {
   return spec;
 }
 
+/// What check was asked, whatever the motion model.
+struct CheckSettings {
+  std::optional<QueryKind> kind;
+  tools::Method method = tools::Method::filtered;
+  bool answers = false, stats = false, json = false, want_toi = false;
+  CcdParams params;
+  BatchOptions batch;
+  std::vector<std::string> files;
+};
+
+CheckSettings check_settings(const ParsedOptions& options) {
+  CheckSettings s;
+  s.kind = kind_of(options);
+  s.method = parse_method(options.text("--method"));
+  s.answers = options.flag("--answers"), s.stats = options.flag("--stats"), s.json = options.flag("--json");
+  s.want_toi = options.flag("--toi");
+  s.params = separation_params(options);
+  s.batch = batch_options(options);
+  s.files = options.positionals();
+  return s;
+}
+
 struct Totals {
   std::size_t queries = 0, positives = 0, fp = 0, fn = 0;
   double seconds = 0;
+  Totals& operator+=(const Totals& t) {
+    queries += t.queries, positives += t.positives, fp += t.fp, fn += t.fn;
+    seconds += t.seconds;
+    return *this;
+  }
+  /// The mean time per query in microseconds (0 without queries).
+  double us_per_query() const { return queries ? 1e6 * seconds / static_cast<double>(queries) : 0.0; }
 };
+
+/// Every file read (and the method's limits checked on it) before anything is printed: a
+/// malformed file fails with no output.
+template <class Motion>
+std::vector<typename Motion::Dataset> load_files(const ParsedOptions& options, const CheckSettings& s) {
+  const TruthSource truth = Motion::truth_source(options, s.files.size(), s.answers);
+  std::vector<typename Motion::Dataset> datasets;
+  for (const std::string& f : s.files) {
+    datasets.push_back(Motion::load(f, s.kind, truth));
+    Motion::require_answers(datasets.back(), s.method, s.params);
+  }
+  return datasets;
+}
+
+/// Answers queries [begin, end) of a file (on --threads threads) and reports them: its answers,
+/// its JSON record (appended to json_items) or its table row.
+template <class Motion>
+Totals check_file(const typename Motion::Dataset& d, std::size_t begin, std::size_t end, const CheckSettings& s,
+                  std::string& json_items) {
+  std::vector<StageCounters> counters(end - begin);  // one per query: no shared counter
+  std::vector<std::optional<TimeInterval>> result(end - begin);
+  const double start = now_seconds();
+  parallel_for(begin, end, s.batch.threads, [&](std::size_t i) {
+    result[i - begin] = Motion::answer(d, i, s.method, &counters[i - begin], s.want_toi, s.params);
+  }, "check");
+  Totals t;
+  t.seconds = now_seconds() - start;
+  t.queries = end - begin;
+  StageCounters stages;
+  for (const StageCounters& c : counters) stages += c;
+  for (std::size_t i = begin; i < end; ++i) {
+    const bool r = result[i - begin].has_value(), truth = d.queries.truth[i];
+    t.positives += truth;
+    t.fp += r && !truth;
+    t.fn += !r && truth;
+  }
+  const CheckRecord record{d.path, kind_name(d.kind), Motion::record_motion, method_name(s.method), t.queries,
+                           t.positives, t.fp, t.fn, t.us_per_query(), Motion::stage_counts(stages)};
+  if (s.answers)
+    print_answers(result, s.want_toi);
+  else if (s.json)
+    append_json_record(json_items, record);
+  else
+    print_check_row(record, s.stats && s.method == tools::Method::filtered);
+  return t;
+}
+
+/// check for one motion model: the files of this shard (--shard), file by file.
+template <class Motion>
+int check(const ParsedOptions& options, const CheckSettings& s) {
+  Motion::check_method(s.method);
+  if (s.files.empty()) throw UsageError("check: no input file (see exactccd check --help)");
+  if (s.json && s.answers) throw UsageError("check: --json and --answers exclude each other");
+  const std::vector<typename Motion::Dataset> datasets = load_files<Motion>(options, s);
+  std::size_t all_queries = 0;
+  for (const auto& d : datasets) all_queries += d.queries.size();
+  const auto [shard_begin, shard_end] = s.batch.shard_range(all_queries);
+  const bool table = !s.answers && !s.json;
+  if (table)
+    std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP", "FN", "us/query");
+  Totals total;
+  std::string json_items;
+  std::size_t offset = 0;  // global index of the file's first query
+  for (const auto& d : datasets) {
+    const std::size_t n = d.queries.size();
+    const std::size_t begin = std::clamp(shard_begin, offset, offset + n) - offset;
+    const std::size_t end = std::clamp(shard_end, offset, offset + n) - offset;
+    offset += n;
+    if (begin != end) total += check_file<Motion>(d, begin, end, s, json_items);
+  }
+  if (s.json) std::printf("[\n%s\n]\n", json_items.c_str());
+  if (table)
+    std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", "total", "", total.queries, total.positives, total.fp,
+                total.fn, total.us_per_query());
+  return kExitOk;
+}
 
 }  // namespace
 
@@ -80,84 +190,8 @@ int run_check(int argc, char** argv) {
     std::cout << help_text(command());
     return kExitOk;
   }
-  if (rigid_motion(options)) return run_rigid_check(options);
-  const std::optional<QueryKind> kind = kind_of(options);
-  const tools::Method method = parse_method(options.text("--method"));
-  const bool answers = options.flag("--answers"), stats = options.flag("--stats"), json = options.flag("--json");
-  const bool want_toi = options.flag("--toi");
-  const CcdParams params = separation_params(options);
-  const BatchOptions batch = batch_options(options);
-  const std::vector<std::string>& files = options.positionals();
-  if (files.empty()) throw UsageError("check: no input file (see exactccd check --help)");
-  if (json && answers) throw UsageError("check: --json and --answers exclude each other");
-
-  // Parse everything first: a malformed file fails before anything is printed.
-  TruthSource truth;
-  truth.json = options.has("--truth") ? options.text("--truth") : "";
-  truth.required = !answers;
-  if (!truth.json.empty() && files.size() != 1)
-    throw UsageError("check: --truth FILE.json goes with one FILE.csv (" + std::to_string(files.size()) + " given)");
-  std::vector<Dataset> datasets;
-  for (const std::string& f : files) {
-    datasets.push_back(load_dataset(f, kind, truth));
-    require_method_answers(method, datasets.back().kind, params);
-    require_double_range(datasets.back(), method);
-  }
-
-  std::size_t all_queries = 0;
-  for (const Dataset& d : datasets) all_queries += d.queries.size();
-  const auto [shard_begin, shard_end] = batch.shard_range(all_queries);
-
-  Totals total;
-  const bool table = !answers && !json;
-  std::string json_items;
-  if (table)
-    std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP",
-                "FN", "us/query");
-  std::size_t offset = 0;  // global index of the dataset's first query
-  for (const Dataset& d : datasets) {
-    const std::size_t n = d.queries.size();
-    const std::size_t begin = std::clamp(shard_begin, offset, offset + n) - offset;
-    const std::size_t end = std::clamp(shard_end, offset, offset + n) - offset;
-    offset += n;
-    if (begin == end) continue;
-    std::vector<StageCounters> counters(end - begin);  // one per query: no shared counter
-    std::vector<std::optional<TimeInterval>> result(end - begin);
-    const double start = now_seconds();
-    parallel_for(begin, end, batch.threads, [&](std::size_t i) {
-      result[i - begin] = run_query(d, i, method, &counters[i - begin], want_toi, params);
-    }, "check");
-    const double seconds = now_seconds() - start;
-    StageCounters stages;
-    for (const StageCounters& c : counters) stages += c;
-    Totals t;
-    t.queries = end - begin;
-    t.seconds = seconds;
-    for (std::size_t i = begin; i < end; ++i) {
-      const bool r = result[i - begin].has_value();
-      t.positives += d.queries.truth[i];
-      t.fp += r && !d.queries.truth[i];
-      t.fn += !r && d.queries.truth[i];
-    }
-    const CheckRecord record{d.name, kind_name(d.kind), nullptr, method_name(method), t.queries, t.positives, t.fp, t.fn,
-                             t.queries ? 1e6 * seconds / t.queries : 0.0, linear_stage_counts(stages)};
-    if (answers)
-      print_answers(result, want_toi);
-    else if (json)
-      append_json_record(json_items, record);
-    else
-      print_check_row(record, stats && method == tools::Method::filtered);
-    total.queries += t.queries;
-    total.positives += t.positives;
-    total.fp += t.fp;
-    total.fn += t.fn;
-    total.seconds += t.seconds;
-  }
-  if (json) std::printf("[\n%s\n]\n", json_items.c_str());
-  if (table)
-    std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", "total", "", total.queries, total.positives,
-                total.fp, total.fn, total.queries ? 1e6 * total.seconds / total.queries : 0.0);
-  return kExitOk;
+  const CheckSettings settings = check_settings(options);
+  return visit_motion(options, [&](auto motion) { return check<decltype(motion)>(options, settings); });
 }
 
 }  // namespace exactccd::cli

@@ -128,73 +128,88 @@ std::optional<double> parse_real(const std::string& v) {
   return x;
 }
 
+long long parse_integer_value(const CommandSpec& c, const OptionSpec& o, const std::string& v) {
+  const auto n = parse_integer_strictly(v);
+  if (!n || *n < o.min || *n > o.max)
+    bad_value(c, o, o.max == LLONG_MAX ? "an integer >= " + std::to_string(o.min)
+                                       : "an integer in " + std::to_string(o.min) + ".." + std::to_string(o.max),
+              v);
+  return *n;
+}
+
+std::uint64_t parse_unsigned64_value(const CommandSpec& c, const OptionSpec& o, const std::string& v) {
+  std::uint64_t n = 0;
+  const char* last = v.data() + v.size();
+  const auto [end, error] = std::from_chars(v.data(), last, n);
+  if (v.empty() || v[0] == '-' || error != std::errc() || end != last)
+    bad_value(c, o, "an integer in 0..18446744073709551615", v);
+  return n;
+}
+
+double parse_real_value(const CommandSpec& c, const OptionSpec& o, const std::string& v) {
+  const std::optional<double> x = parse_real(v);
+  std::ostringstream range;
+  range << "a finite number in [" << o.real_min << ", " << o.real_max << "]";
+  if (!x || !std::isfinite(*x) || *x < o.real_min || *x > o.real_max) bad_value(c, o, range.str(), v);
+  return *x;
+}
+
+bool is_choice(const OptionSpec& o, const std::string& v) {
+  bool known = false;
+  for (const std::string& s : o.choices) known = known || s == v;
+  return known;
+}
+
+std::vector<std::string> parse_choice_list(const CommandSpec& c, const OptionSpec& o, const std::string& v) {
+  if (v == "all") return o.choices;
+  const std::string needs = "a comma-separated list of " + join(o.choices, ", ") + " or all";
+  std::vector<std::string> list;
+  std::string item;
+  std::istringstream items(v);
+  while (std::getline(items, item, ',')) {
+    if (!is_choice(o, item)) bad_value(c, o, needs, v);
+    list.push_back(item);
+  }
+  if (list.empty() || v.back() == ',') bad_value(c, o, needs, v);
+  return list;
+}
+
+std::pair<std::size_t, std::size_t> parse_shard(const CommandSpec& c, const OptionSpec& o, const std::string& v) {
+  const auto slash = v.find('/');
+  const auto index = slash == std::string::npos ? std::nullopt : parse_integer_strictly(v.substr(0, slash));
+  const auto count = slash == std::string::npos ? std::nullopt : parse_integer_strictly(v.substr(slash + 1));
+  if (!index || !count || *index < 0 || *count < 1 || *index >= *count || *count > o.max)
+    bad_value(c, o, "I/N with 0 <= I < N <= " + std::to_string(o.max), v);
+  return {static_cast<std::size_t>(*index), static_cast<std::size_t>(*count)};
+}
+
 OptionValue parse_value(const CommandSpec& c, const OptionSpec& o, const std::string& v) {
   OptionValue out;
   out.text = v;
   switch (o.type) {
     case ValueType::flag:
       break;
-    case ValueType::integer: {
-      const auto n = parse_integer_strictly(v);
-      if (!n || *n < o.min || *n > o.max)
-        bad_value(c, o, o.max == LLONG_MAX ? "an integer >= " + std::to_string(o.min)
-                                           : "an integer in " + std::to_string(o.min) + ".." + std::to_string(o.max),
-                  v);
-      out.integer = *n;
+    case ValueType::integer:
+      out.integer = parse_integer_value(c, o, v);
       break;
-    }
-    case ValueType::unsigned64: {
-      std::uint64_t n = 0;
-      const char* last = v.data() + v.size();
-      const auto [end, error] = std::from_chars(v.data(), last, n);
-      if (v.empty() || v[0] == '-' || error != std::errc() || end != last)
-        bad_value(c, o, "an integer in 0..18446744073709551615", v);
-      out.unsigned64 = n;
+    case ValueType::unsigned64:
+      out.unsigned64 = parse_unsigned64_value(c, o, v);
       break;
-    }
-    case ValueType::real: {
-      const std::optional<double> x = parse_real(v);
-      std::ostringstream range;
-      range << "a finite number in [" << o.real_min << ", " << o.real_max << "]";
-      if (!x || !std::isfinite(*x) || *x < o.real_min || *x > o.real_max) bad_value(c, o, range.str(), v);
-      out.real = *x;
+    case ValueType::real:
+      out.real = parse_real_value(c, o, v);
       break;
-    }
     case ValueType::text:
       if (v.empty()) bad_value(c, o, "a non-empty value", v);
       break;
-    case ValueType::choice: {
-      bool known = false;
-      for (const std::string& s : o.choices) known = known || s == v;
-      if (!known) bad_value(c, o, "one of " + join(o.choices, ", "), v);
+    case ValueType::choice:
+      if (!is_choice(o, v)) bad_value(c, o, "one of " + join(o.choices, ", "), v);
       break;
-    }
-    case ValueType::choice_list: {
-      if (v == "all") {
-        out.list = o.choices;
-        break;
-      }
-      std::string item;
-      std::istringstream items(v);
-      while (std::getline(items, item, ',')) {
-        bool known = false;
-        for (const std::string& s : o.choices) known = known || s == item;
-        if (!known) bad_value(c, o, "a comma-separated list of " + join(o.choices, ", ") + " or all", v);
-        out.list.push_back(item);
-      }
-      if (out.list.empty() || v.back() == ',')
-        bad_value(c, o, "a comma-separated list of " + join(o.choices, ", ") + " or all", v);
+    case ValueType::choice_list:
+      out.list = parse_choice_list(c, o, v);
       break;
-    }
-    case ValueType::shard: {
-      const auto slash = v.find('/');
-      const auto index = slash == std::string::npos ? std::nullopt : parse_integer_strictly(v.substr(0, slash));
-      const auto count = slash == std::string::npos ? std::nullopt : parse_integer_strictly(v.substr(slash + 1));
-      if (!index || !count || *index < 0 || *count < 1 || *index >= *count || *count > o.max)
-        bad_value(c, o, "I/N with 0 <= I < N <= " + std::to_string(o.max), v);
-      out.shard = {static_cast<std::size_t>(*index), static_cast<std::size_t>(*count)};
+    case ValueType::shard:
+      out.shard = parse_shard(c, o, v);
       break;
-    }
   }
   return out;
 }

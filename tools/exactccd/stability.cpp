@@ -79,38 +79,24 @@ struct Cell {  // one (family, k): counts per method
   std::size_t queries = 0;
 };
 
-}  // namespace
-
-int run_stability(int argc, char** argv) {
-  const ParsedOptions options = parse_options(command(), argc, argv);
-  if (options.help()) {
-    std::cout << help_text(command());
-    return kExitOk;
-  }
-  const std::string families_list = options.text("--families");
-  const int k_min = static_cast<int>(options.integer("--k-min")), k_max = static_cast<int>(options.integer("--k-max"));
-  const int instances = static_cast<int>(options.integer("--instances"));
-  const std::uint64_t seed = options.unsigned64("--seed");
-  const BatchOptions batch = batch_options(options);
-  if (!options.positionals().empty())
-    throw UsageError("stability: unknown argument '" + options.positionals()[0] + "' (see exactccd stability --help)");
-  if (k_max < k_min) throw UsageError("stability: need --k-min <= --k-max");
-  // An unwritable --out FILE fails now, not after the whole run.
-  std::optional<AtomicOutputFile> file;
-  if (options.has("--out")) file.emplace(options.text("--out"));
-
+/// The families of --families ("all" or a comma-separated list of names).
+std::vector<const families::Family*> chosen_families(const std::string& list) {
   std::vector<const families::Family*> fams;
-  if (families_list == "all") {
+  if (list == "all") {
     for (const auto& f : families::all_families()) fams.push_back(&f);
-  } else {
-    for (const std::string& n : split(families_list)) {
-      const families::Family* f = families::find_family(n);
-      if (!f) throw UsageError("stability: unknown family '" + n + "'");
-      fams.push_back(f);
-    }
+    return fams;
   }
-  const CcdParams params = separation_params(options);
-  const bool contact_question = params.min_distance == 0 && params.tmax == 1;
+  for (const std::string& n : split(list)) {
+    const families::Family* f = families::find_family(n);
+    if (!f) throw UsageError("stability: unknown family '" + n + "'");
+    fams.push_back(f);
+  }
+  return fams;
+}
+
+/// The methods of --methods that answer the question ("all": those that do; a baseline named at
+/// another question than contact is a UsageError).
+std::vector<tools::Method> chosen_methods(const ParsedOptions& options, bool contact_question) {
   std::vector<tools::Method> methods;
   for (const std::string& n : options.list("--methods")) {
     const tools::Method m = parse_method(n);
@@ -120,52 +106,94 @@ int run_stability(int argc, char** argv) {
     }
     methods.push_back(m);
   }
+  return methods;
+}
 
-  // Tasks: (family, k) pairs, k = -1 for the unperturbed configuration.
+/// What a sweep runs: the (family, k) tasks (k = -1 for the unperturbed configuration), the
+/// methods, the instances per task and the question.
+struct Sweep {
   std::vector<std::pair<const families::Family*, int>> tasks;
-  for (const auto* f : fams) {
-    tasks.push_back({f, families::kUnperturbed});
-    for (int k = k_min; k <= k_max; ++k) tasks.push_back({f, k});
-  }
-  const auto [begin, end] = batch.shard_range(tasks.size());
-  std::vector<Cell> cells(tasks.size());
-  parallel_for(begin, end, batch.threads, [&](std::size_t t) {
-    const auto& [family, k] = tasks[t];
-    Cell& cell = cells[t];
-    cell.fp.assign(methods.size(), 0);
-    cell.fn.assign(methods.size(), 0);
-    for (int i = 0; i < instances; ++i) {
-      std::seed_seq s{seed, static_cast<std::uint64_t>(t), static_cast<std::uint64_t>(i)};
-      std::mt19937_64 rng(s);
-      const families::Instance inst = family->make(k, i % 2 == 0, rng);
-      const bool reference = answer(inst.query, tools::Method::exact, params);  // the CGAL reference
-      // The construction's answer where the family knows it (the contact question's only).
-      const bool truth = contact_question ? inst.expected.value_or(reference) : reference;
-      ++cell.queries;
-      for (std::size_t m = 0; m < methods.size(); ++m) {
-        const bool got = methods[m] == tools::Method::exact ? reference : answer(inst.query, methods[m], params);
-        cell.fp[m] += got && !truth;
-        cell.fn[m] += !got && truth;
-      }
-    }
-  }, "stability");
+  std::vector<tools::Method> methods;
+  int instances = 0;
+  std::uint64_t seed = 0;
+  CcdParams params;
+  bool contact_question() const { return params.min_distance == 0 && params.tmax == 1; }
+};
 
+/// The counts of task t: each instance seeded from (seed, t, i), alternating directions.
+Cell run_task(const Sweep& sweep, std::size_t t) {
+  const auto& [family, k] = sweep.tasks[t];
+  Cell cell;
+  cell.fp.assign(sweep.methods.size(), 0);
+  cell.fn.assign(sweep.methods.size(), 0);
+  for (int i = 0; i < sweep.instances; ++i) {
+    std::seed_seq s{sweep.seed, static_cast<std::uint64_t>(t), static_cast<std::uint64_t>(i)};
+    std::mt19937_64 rng(s);
+    const families::Instance inst = family->make(k, i % 2 == 0, rng);
+    const bool reference = answer(inst.query, tools::Method::exact, sweep.params);  // the CGAL reference
+    // The construction's answer where the family knows it (the contact question's only).
+    const bool truth = sweep.contact_question() ? inst.expected.value_or(reference) : reference;
+    ++cell.queries;
+    for (std::size_t m = 0; m < sweep.methods.size(); ++m) {
+      const tools::Method method = sweep.methods[m];
+      const bool got = method == tools::Method::exact ? reference : answer(inst.query, method, sweep.params);
+      cell.fp[m] += got && !truth;
+      cell.fn[m] += !got && truth;
+    }
+  }
+  return cell;
+}
+
+/// The CSV of tasks [begin, end).
+std::string sweep_csv(const Sweep& sweep, const std::vector<Cell>& cells, std::size_t begin, std::size_t end) {
   std::ostringstream out;
   out << "family,kind,method,k,queries,fp,fn,fp_rate,fn_rate\n";
   for (std::size_t t = begin; t < end; ++t) {
-    const auto& [family, k] = tasks[t];
+    const auto& [family, k] = sweep.tasks[t];
     const Cell& c = cells[t];
-    for (std::size_t m = 0; m < methods.size(); ++m)
-      out << family->name << ',' << kind_name(parse_kind(std::string(family->kind))) << ',' << method_name(methods[m])
-          << ',' << k << ',' << c.queries << ',' << c.fp[m] << ',' << c.fn[m] << ','
-          << static_cast<double>(c.fp[m]) / c.queries << ',' << static_cast<double>(c.fn[m]) / c.queries
-          << '\n';
+    for (std::size_t m = 0; m < sweep.methods.size(); ++m)
+      out << family->name << ',' << kind_name(parse_kind(std::string(family->kind))) << ','
+          << method_name(sweep.methods[m]) << ',' << k << ',' << c.queries << ',' << c.fp[m] << ',' << c.fn[m] << ','
+          << static_cast<double>(c.fp[m]) / c.queries << ',' << static_cast<double>(c.fn[m]) / c.queries << '\n';
   }
+  return out.str();
+}
+
+}  // namespace
+
+int run_stability(int argc, char** argv) {
+  const ParsedOptions options = parse_options(command(), argc, argv);
+  if (options.help()) {
+    std::cout << help_text(command());
+    return kExitOk;
+  }
+  const int k_min = static_cast<int>(options.integer("--k-min")), k_max = static_cast<int>(options.integer("--k-max"));
+  Sweep sweep;
+  sweep.instances = static_cast<int>(options.integer("--instances"));
+  sweep.seed = options.unsigned64("--seed");
+  const BatchOptions batch = batch_options(options);
+  if (!options.positionals().empty())
+    throw UsageError("stability: unknown argument '" + options.positionals()[0] + "' (see exactccd stability --help)");
+  if (k_max < k_min) throw UsageError("stability: need --k-min <= --k-max");
+  // An unwritable --out FILE fails now, not after the whole run.
+  std::optional<AtomicOutputFile> file;
+  if (options.has("--out")) file.emplace(options.text("--out"));
+  const std::vector<const families::Family*> fams = chosen_families(options.text("--families"));
+  sweep.params = separation_params(options);
+  sweep.methods = chosen_methods(options, sweep.contact_question());
+  for (const auto* f : fams) {
+    sweep.tasks.push_back({f, families::kUnperturbed});
+    for (int k = k_min; k <= k_max; ++k) sweep.tasks.push_back({f, k});
+  }
+  const auto [begin, end] = batch.shard_range(sweep.tasks.size());
+  std::vector<Cell> cells(sweep.tasks.size());
+  parallel_for(begin, end, batch.threads, [&](std::size_t t) { cells[t] = run_task(sweep, t); }, "stability");
+  const std::string csv = sweep_csv(sweep, cells, begin, end);
   if (file) {
-    file->stream() << out.str();
+    file->stream() << csv;
     file->commit();
   } else {
-    std::cout << out.str();
+    std::cout << csv;
   }
   return kExitOk;
 }
