@@ -58,6 +58,10 @@ const CommandSpec& command() {
     c.epilogue =
         "\noutput: per file, queries, truth positives, false positives, false negatives and the mean time\n"
         "per query (wall-clock time / queries, so with --threads it is the throughput); then the totals.\n"
+        "With --min-distance D > 0 or --tmax T < 1 those three counts are named for what they count,\n"
+        "truth_1, yes_truth_0 and no_truth_1 (the answer to the question D, T against the truth column):\n"
+        "the bundled files' truth column is contact over [0, 1], so a query that comes within D without\n"
+        "touching is a right answer counted in yes_truth_0, not a false positive.\n"
         "input: docs/formats.md, \"Input files\" (empty files, numerators or denominators over 4096\n"
         "bits and, for the baselines, coordinates beyond the double range are errors).\n"
         "exit codes: 0 ran (whatever it found), 2 bad usage or malformed input (file:line on stderr),\n"
@@ -111,9 +115,7 @@ int run_check(int argc, char** argv) {
   Totals total;
   const bool table = !answers && !json;
   std::string json_items;
-  if (table)
-    std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP",
-                "FN", "us/query");
+  if (table) print_check_header(params);
   std::size_t offset = 0;  // global index of the dataset's first query
   for (const Dataset& d : datasets) {
     const std::size_t n = d.queries.size();
@@ -146,7 +148,7 @@ int run_check(int argc, char** argv) {
     else if (json)
       append_json_record(json_items, record);
     else
-      print_check_row(record, stats && method == tools::Method::filtered);
+      print_check_row(record, stats && method == tools::Method::filtered, params);
     total.queries += t.queries;
     total.positives += t.positives;
     total.fp += t.fp;
@@ -154,9 +156,11 @@ int run_check(int argc, char** argv) {
     total.seconds += t.seconds;
   }
   if (json) std::printf("[\n%s\n]\n", json_items.c_str());
-  if (table)
-    std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", "total", "", total.queries, total.positives,
-                total.fp, total.fn, total.queries ? 1e6 * total.seconds / total.queries : 0.0);
+  if (table) {
+    const CheckRecord sum{"total", "", nullptr, "", total.queries, total.positives, total.fp, total.fn,
+                          total.queries ? 1e6 * total.seconds / total.queries : 0.0, {}};
+    print_check_row(sum, false, params);
+  }
   return kExitOk;
 }
 

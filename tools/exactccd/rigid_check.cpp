@@ -85,8 +85,7 @@ int run_rigid_check(const ParsedOptions& options) {
   std::string json_items;
   std::size_t total_queries = 0, total_positives = 0, total_fp = 0, total_fn = 0;
   double total_seconds = 0;
-  if (table)
-    std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP", "FN", "us/query");
+  if (table) print_check_header(params);
   std::size_t offset = 0;
   for (const RigidDataset& d : datasets) {
     const std::size_t n = d.queries.size();
@@ -122,14 +121,16 @@ int run_rigid_check(const ParsedOptions& options) {
     else if (json)
       append_json_record(json_items, record);
     else
-      print_check_row(record, stats && method == Method::filtered);
+      print_check_row(record, stats && method == Method::filtered, params);
     total_queries += end - begin, total_positives += positives, total_fp += fp, total_fn += fn;
     total_seconds += seconds;
   }
   if (json) std::printf("[\n%s\n]\n", json_items.c_str());
-  if (table)
-    std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", "total", "", total_queries, total_positives, total_fp,
-                total_fn, total_queries ? 1e6 * total_seconds / static_cast<double>(total_queries) : 0.0);
+  if (table) {
+    const CheckRecord sum{"total", "", nullptr, "", total_queries, total_positives, total_fp, total_fn,
+                          total_queries ? 1e6 * total_seconds / static_cast<double>(total_queries) : 0.0, {}};
+    print_check_row(sum, false, params);
+  }
   return kExitOk;
 }
 
