@@ -69,7 +69,7 @@ class FallingCloth:
     """The cloth (vertices [0, n_cloth), upright, leaning 20 degrees, its lower edge 0.35 m up)
     and the fixed obstacle (the other vertices: a hill 0.2 m high on flat ground), one scene."""
 
-    def __init__(self, resolution=40, obstacle_resolution=25, min_distance=1e-3, h=0.01, threads=0):
+    def __init__(self, resolution=40, obstacle_resolution=25, min_distance=1e-3, h=0.02, threads=0):
         cloth, cloth_f = grid(resolution, 1.0)
         tilt = np.radians(20)
         height = cloth[:, 1] + 0.5
@@ -188,7 +188,7 @@ def main(argv=None):
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--record", help="write the per-step record here (CSV)")
     parser.add_argument("--frames", help="write a strip of frames here (PNG)")
-    parser.add_argument("--frame-steps", default="0,25,40,60,100,200", help="the steps the strip shows")
+    parser.add_argument("--frame-steps", default="0,12,20,30,50,100,200", help="the steps the strip shows")
     args = parser.parse_args(argv)
     sim = FallingCloth(resolution=args.resolution, threads=args.threads)
     frame_steps = {int(k) for k in args.frame_steps.split(",")}
