@@ -147,12 +147,14 @@ def resident_kib():
 
 
 def write_record(records, path):
-    """The per-step records as CSV, one row per step."""
+    """The per-step records as CSV, one row per step (times and speeds to 6 digits; the
+    fractions in full: 1 and the double below it differ)."""
     with open(path, "w", newline="") as f:
         out = csv.DictWriter(f, fieldnames=["step"] + list(records[0]))
         out.writeheader()
         for k, r in enumerate(records):
-            out.writerow({"step": k + 1, **r})
+            out.writerow({"step": k + 1, **{key: f"{v:.6g}" if key.endswith(("seconds", "speed")) else v
+                                            for key, v in r.items()}})
 
 
 def draw_frames(sim, snapshots, path):
