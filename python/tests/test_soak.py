@@ -51,7 +51,7 @@ def soak(steps, resolution, obstacle_resolution, check_every, threads=0, on_step
     witness check."""
     sim = falling_cloth.FallingCloth(resolution=resolution, obstacle_resolution=obstacle_resolution, threads=threads)
     d2 = Fraction(sim.d) ** 2
-    records, checks, stalled = [], [], 0
+    table, fields, checks, stalled = None, None, [], 0
     if on_step:
         on_step(0, sim, None)
     # The witness runs in a process of its own (a fresh interpreter): nothing of the soak's
@@ -60,7 +60,10 @@ def soak(steps, resolution, obstacle_resolution, check_every, threads=0, on_step
         for k in range(1, steps + 1):
             r = sim.step()
             r["resident_kib"] = falling_cloth.resident_kib()
-            records.append(r)
+            if table is None:   # the records' memory taken at once, every page touched: no growth
+                fields = {key: type(value) for key, value in r.items()}
+                table = np.full((steps, len(fields)), np.nan)
+            table[k - 1] = list(r.values())
             assert exactccd.intersection_free(sim.x, sim.F), f"step {k}: the library finds an intersection"
             if k % check_every == 0 or k == steps:
                 closest, pairs, crossing = witness.apply(exact_separation.check, (sim.x, sim.F, sim.d))
@@ -71,6 +74,7 @@ def soak(steps, resolution, obstacle_resolution, check_every, threads=0, on_step
             assert stalled <= MAX_STALLED_STEPS, f"step {k}: {stalled} steps in a row with a safe fraction below {STALLED}"
             if on_step:
                 on_step(k, sim, r)
+    records = [{key: kind(v) for (key, kind), v in zip(fields.items(), row)} for row in table]
     return sim, records, checks
 
 
