@@ -109,8 +109,8 @@ def read_obj(path):
     return np.array(V), np.array(F)
 
 
-@pytest.mark.skipif(not os.environ.get("EXACTCCD_FALLING_CLOTH_CPP"), reason="the C++ example is not built "
-                    "(EXACTCCD_FALLING_CLOTH_CPP: build/tests/example_falling_cloth)")
+@pytest.mark.skipif(not os.path.isfile(os.environ.get("EXACTCCD_FALLING_CLOTH_CPP", "")),
+                    reason="the C++ example is not built (EXACTCCD_FALLING_CLOTH_CPP: build/tests/example_falling_cloth)")
 def test_the_cpp_loop(tmp_path):
     """The same loop in C++ (docs/examples/simulation/falling_cloth.cpp; 450 cloth triangles,
     150 steps): every step intersection-free (the library), its mesh every 25 steps farther
