@@ -67,11 +67,13 @@ def soak(steps, resolution, obstacle_resolution, check_every, threads=0, on_step
             assert exactccd.intersection_free(sim.x, sim.F), f"step {k}: the library finds an intersection"
             if k % check_every == 0 or k == steps:
                 closest, pairs, crossing = witness.apply(exact_separation.check, (sim.x, sim.F, sim.d))
-                assert closest is None or closest > d2, f"step {k}: two primitives {float(closest) ** 0.5!r} apart, d = {sim.d!r}"
+                assert closest is None or closest > d2, \
+                    f"step {k}: two primitives {float(closest) ** 0.5!r} apart, d = {sim.d!r}"
                 assert not crossing, f"step {k}: an edge crosses a triangle (independent check)"
                 checks.append((k, closest, pairs))
             stalled = stalled + 1 if r["safe_fraction"] < STALLED else 0
-            assert stalled <= MAX_STALLED_STEPS, f"step {k}: {stalled} steps in a row with a safe fraction below {STALLED}"
+            assert stalled <= MAX_STALLED_STEPS, \
+                f"step {k}: {stalled} steps in a row with a safe fraction below {STALLED}"
             if on_step:
                 on_step(k, sim, r)
     records = [{key: kind(v) for (key, kind), v in zip(fields.items(), row)} for row in table]
@@ -110,7 +112,8 @@ def read_obj(path):
 
 
 @pytest.mark.skipif(not os.path.isfile(os.environ.get("EXACTCCD_FALLING_CLOTH_CPP", "")),
-                    reason="the C++ example is not built (EXACTCCD_FALLING_CLOTH_CPP: build/tests/example_falling_cloth)")
+                    reason="the C++ example is not built (EXACTCCD_FALLING_CLOTH_CPP: "
+                           "build/tests/example_falling_cloth)")
 def test_the_cpp_loop(tmp_path):
     """The same loop in C++ (docs/examples/simulation/falling_cloth.cpp; 450 cloth triangles,
     150 steps): every step intersection-free (the library), its mesh every 25 steps farther
@@ -176,7 +179,9 @@ def test_witness_keeps_every_pair_within_d():
         kept = {tuple(p) for p in exact_separation.near_pairs(V, E, E, d, same=True)}
         for i in range(len(E)):
             for j in range(i + 1, len(E)):
-                if not set(E[i]) & set(E[j]) and exact_separation.segment_segment2(*(X[k] for k in (*E[i], *E[j]))) <= 16 * d * d:
+                if set(E[i]) & set(E[j]):
+                    continue
+                if exact_separation.segment_segment2(*(X[k] for k in (*E[i], *E[j]))) <= 16 * d * d:
                     assert (i, j) in kept
 
 
@@ -204,7 +209,8 @@ def summary(records, checks, d):
         "steps_with_response": sum(r["response_rounds"] > 0 for r in records),
         "max_response_rounds": max(r["response_rounds"] for r in records),
         "steps_with_rounding_retry": sum(r["retries"] > 0 for r in records),
-        "max_contacts": max(r["contacts"] for r in records), "max_self_contacts": max(r["self_contacts"] for r in records),
+        "max_contacts": max(r["contacts"] for r in records),
+        "max_self_contacts": max(r["self_contacts"] for r in records),
         "final_max_speed": records[-1]["max_speed"],
         "witness_checks": len(checks),
         "closest_squared_over_d_squared_minus_1": float(closest / Fraction(d) ** 2 - 1),  # exact, then rounded
@@ -243,7 +249,8 @@ def main(argv=None):
     parser.add_argument("--resolution", type=int, default=40)
     parser.add_argument("--check-every", type=int, default=50)
     parser.add_argument("--threads", type=int, default=2)
-    parser.add_argument("--out", required=True, help="prefix of the outputs: PREFIX.csv, PREFIX.png, PREFIX.txt, PREFIX-frames.png")
+    parser.add_argument("--out", required=True,
+                        help="prefix of the outputs: PREFIX.csv, PREFIX.png, PREFIX.txt, PREFIX-frames.png")
     args = parser.parse_args(argv)
     frame_steps = {0, 12, 20, 30, 50, 100, args.steps}
     snapshots = []

@@ -25,7 +25,8 @@ def inputs():
     """The shared read-only inputs: query batches of every 3D kind, the cloth scene's step."""
     batches = {}
     for kind, name in (("vertex_face", "sim/sim-cloth-vertex-face.csv"), ("edge_edge", "sim/sim-fold-edge-edge.csv"),
-                       ("point_edge", "kinds/kinds-fold-point-edge.csv"), ("point_point", "kinds/kinds-fold-point-point.csv")):
+                       ("point_edge", "kinds/kinds-fold-point-edge.csv"),
+                       ("point_point", "kinds/kinds-fold-point-point.csv")):
         q, _ = read_queries(DATA / name, kind)
         batches[kind] = np.tile(q, (12, 1, 1))                    # about 5 000 rows: above 4096, interruptible
     V0, F = exactccd.read_mesh(DATA / "scenes" / "cloth" / "T0.obj")
@@ -48,10 +49,12 @@ def tasks(batches, V0, V1, F, shared):
             (f"find_collisions d={d}", lambda t, kw=kw: exactccd.find_collisions(V0, V1, F, threads=t, **kw)),
             (f"earliest_toi d={d}", lambda t, kw=kw: exactccd.earliest_toi(V0, V1, F, threads=t, **kw)),
             (f"is_collision_free d={d}", lambda t, kw=kw: exactccd.is_collision_free(V0, V1, F, threads=t, **kw)),
-            (f"max_collision_free_step d={d}", lambda t, kw=kw: exactccd.max_collision_free_step(V0, V1, F, threads=t, **kw)),
+            (f"max_collision_free_step d={d}",
+             lambda t, kw=kw: exactccd.max_collision_free_step(V0, V1, F, threads=t, **kw)),
         ]
     vf = np.array([[v, *F[f]] for v, f in shared.candidates["vertex_face"]], dtype=np.int64).reshape(-1, 4)
-    out.append(("candidates_find_collisions", lambda t: exactccd.candidates_find_collisions(V0, V1, vertex_face=vf, threads=t)))
+    out.append(("candidates_find_collisions",
+                lambda t: exactccd.candidates_find_collisions(V0, V1, vertex_face=vf, threads=t)))
     out.append(("intersection_free", lambda t: exactccd.intersection_free(V1, F)))
     out.append(("shared broad phase", lambda t: (shared.find_collisions(), shared.max_collision_free_step())))
 

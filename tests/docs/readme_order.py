@@ -102,7 +102,8 @@ def main(source, build, work):
     run(["cmake", "--install", str(build), "--prefix", str(prefix)])
     consumer = work / "cpp"
     consumer.mkdir()
-    (consumer / "CMakeLists.txt").write_text(CONSUMER.format(source=(clone / "docs/examples/first_query.cpp").as_posix()))
+    example = (clone / "docs" / "examples" / "first_query.cpp").as_posix()
+    (consumer / "CMakeLists.txt").write_text(CONSUMER.format(source=example))
     run(["cmake", "-S", str(consumer), "-B", str(consumer / "build"), "-DCMAKE_BUILD_TYPE=Release",
          f"-DCMAKE_PREFIX_PATH={prefix}"])
     run(["cmake", "--build", str(consumer / "build")])
@@ -113,7 +114,9 @@ def main(source, build, work):
 
     env = dict(os.environ, PATH=f"{prefix / 'bin'}:{os.environ['PATH']}")
     out = run(["bash", "-euo", "pipefail", "docs/examples/cli.sh"], cwd=clone, env=env)
-    if not re.search(r"total .*\ntotal [^\n]*\n1 [0-9.e-]+ [0-9.e-]+\n1 [^\n]*\n1 [^\n]*\nvertices .*candidates ", out, re.S):
+    # The output docs.example_cli expects (tests/CMakeLists.txt).
+    expected = r"total .*\ntotal [^\n]*\n1 [0-9.e-]+ [0-9.e-]+\n1 [^\n]*\n1 [^\n]*\nvertices .*candidates "
+    if not re.search(expected, out, re.S):
         raise SystemExit(f"readme_order: unexpected output of docs/examples/cli.sh:\n{out}")
     print(f"[{time.monotonic() - t0:.1f} s] the command lines with the installed exactccd on PATH")
     shutil.rmtree(work)
