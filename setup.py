@@ -33,6 +33,32 @@ def project_version():
     return found.group(1)
 
 
+def require_wheel_support():
+    """Stops with a message naming the interpreter and the fix when pip asks this interpreter's
+    setuptools for a wheel (or its metadata: dist_info runs bdist_wheel) and it cannot make one:
+    setuptools before 70.1 takes bdist_wheel from the separate `wheel` package, without which
+    pip reports only `error: invalid command 'bdist_wheel'` (a virtual environment made without
+    --system-site-packages has setuptools but no wheel)."""
+    if not {"bdist_wheel", "dist_info", "editable_wheel"} & set(sys.argv[1:]):
+        return
+    try:
+        import setuptools.command.bdist_wheel  # noqa: F401  (setuptools >= 70.1)
+        return
+    except ImportError:
+        pass
+    try:
+        import wheel.bdist_wheel  # noqa: F401
+    except ImportError:
+        import setuptools
+        sys.exit(
+            f"exactccd: {sys.executable} (Python {sys.version.split()[0]}, setuptools {setuptools.__version__}) "
+            "cannot build a wheel: the `wheel` package is missing for this interpreter, and pip installs "
+            "through a wheel. Fix: on Debian, `sudo apt-get install python3-wheel` (tools/install-deps.sh "
+            "installs it) and make the virtual environment with `python3 -m venv --system-site-packages` "
+            "as docs/python.md does; in a virtual environment of its own, `python -m pip install wheel`; "
+            "or drop --no-build-isolation so that pip fetches setuptools and wheel (needs a package index).")
+
+
 class CMakeExtension(Extension):
     """The compiled module exactccd._exactccd, built by CMake (no sources for setuptools)."""
 
@@ -64,6 +90,7 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built[0], target)
 
 
+require_wheel_support()
 setup(
     version=project_version(),
     packages=["exactccd"],

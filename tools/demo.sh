@@ -37,6 +37,8 @@ echo "   vertex-face and edge-edge files: exactccd check --method naive data/{ca
 echo
 echo "== minimum separation: which simulation-like queries come within 1e-3 (every kind):"
 echo "   exactccd check --min-distance 1e-3 data/sim/*.csv data/kinds/*.csv"
+echo "   (the files' truth column is contact: truth_1 counts the queries that touch, yes_truth_0 those"
+echo "   that come within 1e-3 without touching, right answers to this question, no_truth_1 must be 0)"
 "$exe" check --min-distance 1e-3 data/sim/*.csv data/kinds/*.csv
 echo
 echo "== their times of impact, the tightest double interval [lo, hi] of the exact time (first 3):"

@@ -7,7 +7,9 @@
 # environment elsewhere; the user site (--user); `pip uninstall`. Offline: nothing is downloaded.
 # Usage: bash tools/test_pip_install.sh [WORK_DIR]   (default build-pip-test/; tools/test.sh runs it)
 # Environment: PYTHON (default: the python3 with NumPy that CMake picks: /usr/bin/python3 on
-# Debian), EXACTCCD_CLI (the built exactccd, for the tests comparing with it; default build/exactccd).
+# Debian), EXACTCCD_CLI (the built exactccd, for the tests comparing with it; default build/exactccd),
+# EXACTCCD_FALLING_CLOTH_CPP (the C++ simulation example that test_soak.py runs; default
+# build/tests/example_falling_cloth).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -22,6 +24,7 @@ fi
 export PATH="$(dirname "$python"):$PATH"   # the README's `python3` is this one
 export PIP_NO_INDEX=1 PIP_DISABLE_PIP_VERSION_CHECK=1 PYTHONDONTWRITEBYTECODE=1 MPLBACKEND=Agg
 export EXACTCCD_CLI=${EXACTCCD_CLI:-$root/build/exactccd}
+export EXACTCCD_FALLING_CLOTH_CPP=${EXACTCCD_FALLING_CLOTH_CPP:-$root/build/tests/example_falling_cloth}
 step() { echo "== [${SECONDS} s] test_pip_install: $*"; }
 
 step "a copy of the checkout's files in $work/src"

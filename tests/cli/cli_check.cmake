@@ -50,6 +50,14 @@ elseif(CASE STREQUAL "check_table")
      OR NOT out MATCHES "\ntotal +4 +2 +0 +0 +[0-9.]+\n$")
     message(FATAL_ERROR "check: unexpected table\n${out}")
   endif()
+  # Another question (here d = 100, within which both queries come): the counts against the truth
+  # column (contact) are named for what they count; the query that comes within d without
+  # touching is a right answer, counted in yes_truth_0, not a false positive.
+  run(check --min-distance 100 ${small})
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "^file +kind +queries +truth_1 +yes_truth_0 +no_truth_1 +us/query\n"
+     OR NOT out MATCHES "small-vertex-face.csv +vf +2 +1 +1 +0 +[0-9.]+\ntotal +2 +1 +1 +0 +[0-9.]+\n$")
+    message(FATAL_ERROR "check --min-distance: unexpected table\n${out}")
+  endif()
 
 elseif(CASE STREQUAL "check_malformed")
   # A malformed line: file and line on stderr, exit code 2, nothing on stdout, even when a good

@@ -3,7 +3,8 @@
 C++ example compiled and run, the Python example and the command lines executed, the Python
 install by tools/test_pip_install.sh; tests/CMakeLists.txt), and every command of
 docs/examples/two_commands.sh is a line of .ci/run. Also: the README is at most 150 lines, and
-every file of docs/examples/ is shown in it.
+every file directly in docs/examples/ is shown in it (docs/examples/simulation/ holds the longer
+simulation example, shown in docs/simulation.md).
 
 Usage: python3 tests/docs/readme_snippets.py SOURCE_DIR"""
 

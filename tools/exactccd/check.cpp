@@ -12,30 +12,46 @@
 namespace exactccd::cli {
 namespace {
 
+/// What check does (its --help).
+constexpr const char* kDescription =
+    "Answers every query of benchmark CSV files (Wang et al. 2021 format: 8 rows per query,\n"
+    "x_num,x_den,y_num,y_den,z_num,z_den,truth) and compares with the truth column. Other kinds:\n"
+    "point-edge 6 rows (p_t0, a_t0, b_t0, p_t1, a_t1, b_t1), point-point 4 rows (p_t0, q_t0, p_t1,\n"
+    "q_t1); the 2D kinds have the rows of their 3D counterpart with 5 columns each\n"
+    "(x_num,x_den,y_num,y_den,truth). With --min-distance D and --tmax T a query collides iff the\n"
+    "primitives come within distance D at some t in [0, T] (exactly; the truth column must be\n"
+    "that question's).\n"
+    "\n"
+    "The Scalable CCD dataset's query files (6 columns x_num, x_den, y_num, y_den, z_num, z_den,\n"
+    "no truth column; kind 'vf' or 'ee' at the end of the file name, e.g. 227vf.csv) take their\n"
+    "truth from a JSON array of booleans: --truth FILE.json, or found by name\n"
+    "(DIR/queries/227vf.csv -> DIR/mma_bool/227vf_mma_bool.json). Without one such a file is an\n"
+    "error, except with --answers (which needs no truth).\n"
+    "\n"
+    "--motion rigid: rigid bodies (--kind vf|ee; see --motion below): vertex p of body A against\n"
+    "triangle (a, b, c) of body B, or edge (a0, a1) of A against edge (b0, b1) of B, each body moving\n"
+    "from pose (c0, q0) to (c1, q1) (c and the quaternion q interpolated linearly; docs/design.md 9);\n"
+    "methods filtered and exact.\n";
+
+/// What check prints, and its exit codes (its --help).
+constexpr const char* kEpilogue =
+    "\noutput: per file, queries, truth positives, false positives, false negatives and the mean time\n"
+    "per query (wall-clock time / queries, so with --threads it is the throughput); then the totals.\n"
+    "With --min-distance D > 0 or --tmax T < 1 those three counts are named for what they count,\n"
+    "truth_1, yes_truth_0 and no_truth_1 (the answer to the question D, T against the truth column):\n"
+    "the bundled files' truth column is contact over [0, 1], so a query that comes within D without\n"
+    "touching is a right answer counted in yes_truth_0, not a false positive.\n"
+    "input: docs/formats.md, \"Input files\" (empty files, numerators or denominators over 4096\n"
+    "bits and, for the baselines, coordinates beyond the double range are errors).\n"
+    "exit codes: 0 ran (whatever it found), 2 bad usage or malformed input (file:line on stderr),\n"
+    "1 internal error.\n";
+
 const CommandSpec& command() {
   static const CommandSpec spec = [] {
     CommandSpec c;
     c.name = "check";
     c.usage = "usage: exactccd check [options] FILE.csv...";
-    c.description =
-        "Answers every query of benchmark CSV files (Wang et al. 2021 format: 8 rows per query,\n"
-        "x_num,x_den,y_num,y_den,z_num,z_den,truth) and compares with the truth column. Other kinds:\n"
-        "point-edge 6 rows (p_t0, a_t0, b_t0, p_t1, a_t1, b_t1), point-point 4 rows (p_t0, q_t0, p_t1,\n"
-        "q_t1); the 2D kinds have the rows of their 3D counterpart with 5 columns each\n"
-        "(x_num,x_den,y_num,y_den,truth). With --min-distance D and --tmax T a query collides iff the\n"
-        "primitives come within distance D at some t in [0, T] (exactly; the truth column must be\n"
-        "that question's).\n"
-        "\n"
-        "The Scalable CCD dataset's query files (6 columns x_num, x_den, y_num, y_den, z_num, z_den,\n"
-        "no truth column; kind 'vf' or 'ee' at the end of the file name, e.g. 227vf.csv) take their\n"
-        "truth from a JSON array of booleans: --truth FILE.json, or found by name\n"
-        "(DIR/queries/227vf.csv -> DIR/mma_bool/227vf_mma_bool.json). Without one such a file is an\n"
-        "error, except with --answers (which needs no truth).\n"
-        "\n"
-        "--motion rigid: rigid bodies (--kind vf|ee; see --motion below): vertex p of body A against\n"
-        "triangle (a, b, c) of body B, or edge (a0, a1) of A against edge (b0, b1) of B, each body moving\n"
-        "from pose (c0, q0) to (c1, q1) (c and the quaternion q interpolated linearly; docs/design.md 9);\n"
-        "methods filtered and exact.\n";
+    c.description = kDescription;
     c.options = {
         kind_option("query kind (default: inferred from 'vertex-face' / 'edge-edge' in the path)"),
         motion_option(
@@ -60,13 +76,7 @@ const CommandSpec& command() {
     };
     for (OptionSpec& o : separation_option_specs()) c.options.push_back(o);
     for (OptionSpec& o : batch_option_specs()) c.options.push_back(o);
-    c.epilogue =
-        "\noutput: per file, queries, truth positives, false positives, false negatives and the mean time\n"
-        "per query (wall-clock time / queries, so with --threads it is the throughput); then the totals.\n"
-        "input: docs/formats.md, \"Input files\" (empty files, numerators or denominators over 4096\n"
-        "bits and, for the baselines, coordinates beyond the double range are errors).\n"
-        "exit codes: 0 ran (whatever it found), 2 bad usage or malformed input (file:line on stderr),\n"
-        "1 internal error.\n";
+    c.epilogue = kEpilogue;
     return c;
   }();
   return spec;
@@ -148,7 +158,7 @@ Totals check_file(const typename Motion::Dataset& d, std::size_t begin, std::siz
   else if (s.json)
     append_json_record(json_items, record);
   else
-    print_check_row(record, s.stats && s.method == tools::Method::filtered);
+    print_check_row(record, s.stats && s.method == tools::Method::filtered, s.params);
   return t;
 }
 
@@ -163,8 +173,7 @@ int check(const ParsedOptions& options, const CheckSettings& s) {
   for (const auto& d : datasets) all_queries += d.queries.size();
   const auto [shard_begin, shard_end] = s.batch.shard_range(all_queries);
   const bool table = !s.answers && !s.json;
-  if (table)
-    std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP", "FN", "us/query");
+  if (table) print_check_header(s.params);
   Totals total;
   std::string json_items;
   std::size_t offset = 0;  // global index of the file's first query
@@ -176,9 +185,11 @@ int check(const ParsedOptions& options, const CheckSettings& s) {
     if (begin != end) total += check_file<Motion>(d, begin, end, s, json_items);
   }
   if (s.json) std::printf("[\n%s\n]\n", json_items.c_str());
-  if (table)
-    std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", "total", "", total.queries, total.positives, total.fp,
-                total.fn, total.us_per_query());
+  if (table) {
+    const CheckRecord sum{"total", "", nullptr, "", total.queries, total.positives, total.fp, total.fn,
+                          total.us_per_query(), {}};
+    print_check_row(sum, false, s.params);
+  }
   return kExitOk;
 }
 

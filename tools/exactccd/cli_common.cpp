@@ -359,9 +359,24 @@ void append_json_record(std::string& items, const CheckRecord& rec) {
   items += item + "}}";
 }
 
-void print_check_row(const CheckRecord& rec, bool stages_line) {
-  std::printf("%-60s %4s %8zu %9zu %6zu %6zu %12.3f\n", rec.file.c_str(), rec.kind.c_str(), rec.queries,
-              rec.positives, rec.fp, rec.fn, rec.us_per_query);
+namespace {
+/// Whether the report answers the default question (contact over [0, 1]).
+bool default_question(const CcdParams& params) { return params.min_distance == 0 && params.tmax == 1; }
+}  // namespace
+
+void print_check_header(const CcdParams& params) {
+  if (default_question(params)) {
+    std::printf("%-60s %4s %8s %9s %6s %6s %12s\n", "file", "kind", "queries", "positives", "FP", "FN", "us/query");
+  } else {
+    std::printf("%-60s %4s %8s %9s %11s %10s %12s\n", "file", "kind", "queries", "truth_1", "yes_truth_0", "no_truth_1",
+                "us/query");
+  }
+}
+
+void print_check_row(const CheckRecord& rec, bool stages_line, const CcdParams& params) {
+  const int fp_width = default_question(params) ? 6 : 11, fn_width = default_question(params) ? 6 : 10;
+  std::printf("%-60s %4s %8zu %9zu %*zu %*zu %12.3f\n", rec.file.c_str(), rec.kind.c_str(), rec.queries,
+              rec.positives, fp_width, rec.fp, fn_width, rec.fn, rec.us_per_query);
   if (!stages_line) return;
   std::string line = "  stages: ";
   for (std::size_t k = 0; k < rec.stages.size(); ++k)

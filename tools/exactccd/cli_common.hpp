@@ -177,8 +177,16 @@ struct CheckRecord {
 /// Appends rec to the items of a --json report ("  {...}", after ",\n" unless the first).
 void append_json_record(std::string& items, const CheckRecord& rec);
 
-/// Prints rec's row of the text report and, with `stages_line`, its stage counts below it.
-void print_check_row(const CheckRecord& rec, bool stages_line);
+/// Prints the header of the text report. For the default question (d = 0, tmax = 1) the counts
+/// against the truth column are "positives", "FP" and "FN"; for another one they are named for
+/// what they count, "truth_1", "yes_truth_0" and "no_truth_1": the bundled files' truth column is
+/// contact over [0, 1], so a query that comes within d without touching is a right answer
+/// counted in yes_truth_0, not a false positive.
+void print_check_header(const CcdParams& params);
+
+/// Prints rec's row of the text report (the columns of print_check_header(params)) and, with
+/// `stages_line`, its stage counts below it.
+void print_check_row(const CheckRecord& rec, bool stages_line, const CcdParams& params = {});
 
 /// The answer of one method on query i: the TOI when it collides. Rational queries that are
 /// not exact doubles run the exact path (the baselines round them to the nearest doubles).
