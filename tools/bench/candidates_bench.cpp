@@ -33,13 +33,10 @@ struct Fixture {
   std::vector<EdgeEdgeQuery> ee;
 };
 
-const Fixture& fixture(int resolution) {
-  static std::map<int, Fixture> cache;  // benchmark-local, filled on the main thread
-  auto it = cache.find(resolution);
-  if (it != cache.end()) return it->second;
+/// The step `scene` with its broad-phase candidates as a caller's list and as queries.
+Fixture fixture_of(Scene scene) {
   Fixture f;
-  const scene::MovingMesh mesh = scene::procedural_scene("cloth", resolution, 1);
-  f.scene = Scene{mesh.positions_t0, mesh.positions_t1, mesh.triangles, {}, {}};
+  f.scene = std::move(scene);
   const scene::ScenePrimitives prim = scene::scene_primitives(f.scene);
   const auto& e = prim.edges;
   for (const auto& [v, t] : prim.candidates.vertex_face) {
@@ -51,7 +48,16 @@ const Fixture& fixture(int resolution) {
     f.candidates.edge_edge.push_back({e[i][0], e[i][1], e[j][0], e[j][1]});
     f.ee.push_back(scene::edge_edge_query(f.scene, e[i], e[j]));
   }
-  return cache.emplace(resolution, std::move(f)).first->second;
+  return f;
+}
+
+const Fixture& fixture(int resolution) {
+  static std::map<int, Fixture> cache;  // benchmark-local, filled on the main thread
+  auto it = cache.find(resolution);
+  if (it != cache.end()) return it->second;
+  const scene::MovingMesh mesh = scene::procedural_scene("cloth", resolution, 1);
+  return cache.emplace(resolution, fixture_of(Scene{mesh.positions_t0, mesh.positions_t1, mesh.triangles, {}, {}}))
+      .first->second;
 }
 
 void label(benchmark::State& state, const Fixture& f) {
@@ -179,7 +185,7 @@ BENCHMARK(BM_CandidatesFindCollisions)
     benchmark::kMillisecond);
 BENCHMARK(BM_PrimitiveToiLoop) EXACTCCD_SIZES;
 
-/// The step of two mesh files (--frames) and its broad-phase candidates as a caller's list.
+/// The step of two mesh files (--frames) and its broad-phase candidates.
 Fixture& frames() {
   static Fixture f;  // benchmark-local, filled on the main thread before the benchmarks run
   return f;
@@ -209,17 +215,7 @@ void BM_FramesCandidatesMaxStep(benchmark::State& state) {
 void register_frames(const std::string& spec) {
   const std::size_t comma = spec.find(',');
   const io::TriangleMesh m0 = io::read_mesh(spec.substr(0, comma)), m1 = io::read_mesh(spec.substr(comma + 1));
-  Fixture& f = frames();
-  f.scene = Scene{m0.vertices, m1.vertices, m0.triangles, {}, {}};
-  const scene::ScenePrimitives prim = scene::scene_primitives(f.scene);
-  for (const auto& [v, t] : prim.candidates.vertex_face) {
-    const auto& tri = f.scene.triangles[static_cast<std::size_t>(t)];
-    f.candidates.vertex_face.push_back({v, tri[0], tri[1], tri[2]});
-  }
-  for (const auto& [i, j] : prim.candidates.edge_edge) {
-    const auto &a = prim.edges[static_cast<std::size_t>(i)], &b = prim.edges[static_cast<std::size_t>(j)];
-    f.candidates.edge_edge.push_back({a[0], a[1], b[0], b[1]});
-  }
+  frames() = fixture_of(Scene{m0.vertices, m1.vertices, m0.triangles, {}, {}});
   benchmark::RegisterBenchmark("BM_FramesCandidates", BM_FramesCandidates)
       ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
   benchmark::RegisterBenchmark("BM_FramesCandidatesMaxStep", BM_FramesCandidatesMaxStep)
