@@ -71,8 +71,10 @@ constexpr unsigned kMaxThreads = 1024;
 struct SceneOptions {
   /// Threads of the broad and the narrow phase, 0..kMaxThreads (1024); 0 means
   /// std::thread::hardware_concurrency() (at most 1024 of them). A larger value is refused
-  /// (std::invalid_argument); fewer threads run when the system refuses to start more. The
-  /// results do not depend on it.
+  /// (std::invalid_argument). The loops run on oneTBB: at most this many threads, fewer when
+  /// the machine has fewer; called from inside a caller's TBB loop, on the caller's threads
+  /// (when its task arena has no more than this many) or in a task arena of this many, never
+  /// on threads of its own. The results do not depend on it.
   unsigned threads = 0;
   /// The minimum separation d: a pair collides when its primitives come within distance <= d
   /// (Euclidean, between the closed primitives). Finite and >= 0; 0 asks for contact.

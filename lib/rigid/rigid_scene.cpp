@@ -92,7 +92,7 @@ std::vector<RigidCollision> collisions(const std::vector<RigidBody>& bodies, con
   const CcdParams params{options.min_distance, options.tmax};
   std::vector<char> hit(candidates.size());
   // In chunks also on one thread: a set cancellation flag stops the loop between chunks.
-  scene::parallel_chunks(candidates.size(), scene::resolve_threads(options.threads), 64, [&](std::size_t begin, std::size_t end, unsigned) {
+  scene::call_chunks(candidates.size(), scene::resolve_threads(options.threads), 64, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t k = begin; k < end; ++k) {
       RigidCollision& c = candidates[k];
       const RigidBody &A = bodies[c.body_a], &B = bodies[c.body_b];

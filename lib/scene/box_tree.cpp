@@ -140,14 +140,22 @@ void BoxTree::set_order(std::vector<std::uint64_t>& keys, unsigned threads) {
 }
 
 std::vector<BoxTree::NodePair> BoxTree::pair_tasks(const BoxTree& other, std::size_t wanted) const {
-  std::vector<NodePair> tasks;
-  if (order_.empty() || other.order_.empty()) return tasks;
+  std::vector<NodePair> tasks, scratch;
+  pair_tasks(other, wanted, tasks, scratch);
+  return tasks;
+}
+
+void BoxTree::pair_tasks(const BoxTree& other, std::size_t wanted, std::vector<NodePair>& tasks,
+                         std::vector<NodePair>& next) const {
+  tasks.clear();
+  next.clear();
+  if (order_.empty() || other.order_.empty()) return;
   const bool self = &other == this;
   tasks.push_back({1, 1});
   // Level by level (both nodes of a pair are always at the same depth, or one a leaf), the
   // children pairs exactly as pairs_from expands them, so the tasks partition its work.
   while (tasks.size() < wanted) {
-    std::vector<NodePair> next;
+    next.clear();
     bool expanded = false;
     for (const auto& [a, b] : tasks) {
       if (!overlap(nodes_[a], other.nodes_[b])) continue;
@@ -175,7 +183,6 @@ std::vector<BoxTree::NodePair> BoxTree::pair_tasks(const BoxTree& other, std::si
     tasks.swap(next);
     if (!expanded) break;
   }
-  return tasks;
 }
 
 void BoxTree::require_size(std::size_t n) const {

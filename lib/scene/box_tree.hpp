@@ -117,6 +117,11 @@ class BoxTree {
   /// dropped): independent pieces of work for pairs_from().
   std::vector<NodePair> pair_tasks(const BoxTree& other, std::size_t wanted) const;
 
+  /// The same node pairs, written into `tasks` with `scratch` for the levels in between (both
+  /// cleared first; kept by a caller that asks repeatedly, they allocate nothing once grown).
+  void pair_tasks(const BoxTree& other, std::size_t wanted, std::vector<NodePair>& tasks,
+                  std::vector<NodePair>& scratch) const;
+
   /// Calls report(i, j) for every primitive i of this tree and j of `other` whose float boxes
   /// overlap (closed; every pair whose boxes overlap, and a few more: the caller tests the
   /// exact boxes) and which lie below the node pair `task` (from pair_tasks(other)); when

@@ -21,16 +21,19 @@ template <class Keep, class Make>
 std::vector<std::array<int, 2>> tree_pairs(const BoxTree& a, const BoxTree& b, unsigned threads, Keep&& keep,
                                            Make&& make) {
   const std::vector<BoxTree::NodePair> tasks = a.pair_tasks(b, threads > 1 ? kTasksPerThread * threads : 1);
-  std::vector<std::vector<std::array<int, 2>>> found(std::max(1u, threads));
-  const unsigned workers = parallel_chunks(tasks.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned w) {
-    std::vector<std::array<int, 2>>& out = found[w];
+  std::vector<PerWorker<std::vector<std::array<int, 2>>>> per_worker(worker_slots(threads));
+  parallel_chunks(tasks.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned w) {
+    std::vector<std::array<int, 2>>& out = per_worker[w].value;
     for (std::size_t k = begin; k < end; ++k)
       a.pairs_from(b, tasks[k], [&](int i, int j) {
         if (keep(i, j)) out.push_back(make(i, j));
       });
     return true;
   });
-  found.resize(std::min<std::size_t>(found.size(), workers));
+  std::vector<std::vector<std::array<int, 2>>> found;  // the workers' lists, in slot order
+  for (auto& w : per_worker)
+    if (!w.value.empty()) found.push_back(std::move(w.value));
+  if (found.empty()) return {};
   parallel_chunks(found.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t w = begin; w < end; ++w) std::sort(found[w].begin(), found[w].end());
     return true;
@@ -55,21 +58,33 @@ void BroadPhaseTrees::fit(std::vector<Box> vertex_boxes, unsigned threads) {
   if (built_ && vertex_boxes.size() != vertex_boxes_.size())
     throw std::invalid_argument("BroadPhaseTrees::fit: the number of vertices changed");
   vertex_boxes_ = std::move(vertex_boxes);
+  fit_trees(threads);
+}
+
+void BroadPhaseTrees::refit(unsigned threads) {
+  if (!built_) throw std::logic_error("BroadPhaseTrees::refit before fit");
+  if (vertex_boxes_.size() != float_boxes_.size())
+    throw std::invalid_argument("BroadPhaseTrees::refit: the number of vertices changed");
+  fit_trees(threads);
+}
+
+void BroadPhaseTrees::fit_trees(unsigned threads) {
   // The trees' float boxes from the vertices' float boxes: float_box rounds every bound
   // outwards by a monotone map (float_below, float_above), so the float hull of the vertices'
   // float boxes is exactly float_box of the hull of their boxes (min and max commute with a
-  // monotone map), the box the tree needs (float_box.hpp), at one conversion per vertex.
-  std::vector<FloatBox> fboxes(vertex_boxes_.size());
-  parallel_ranges(fboxes.size(), threads, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t v = begin; v < end; ++v) fboxes[v] = float_box(vertex_boxes_[v]);
+  // monotone map), the box the tree needs (float_box.hpp), at one conversion per vertex. Kept
+  // between fits (a refit then allocates nothing).
+  float_boxes_.resize(vertex_boxes_.size());
+  parallel_ranges(float_boxes_.size(), threads, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) float_boxes_[v] = float_box(vertex_boxes_[v]);
   });
   // The four trees side by side, largest first, each on its share of the threads: one
-  // thread per tree builds without the start of a thread pool per loop of the build, and
+  // thread per tree builds without handing out the pieces of every loop of the build, and
   // the trees come out the same on any number of threads.
   constexpr std::size_t kTrees = 4;
   const unsigned each = std::max(1u, threads / static_cast<unsigned>(kTrees));
   parallel_chunks(kTrees, threads, 1, [&](std::size_t begin, std::size_t end, unsigned) {
-    for (std::size_t k = begin; k < end; ++k) fit_tree(static_cast<int>(k), fboxes, each);
+    for (std::size_t k = begin; k < end; ++k) fit_tree(static_cast<int>(k), float_boxes_, each);
     return true;
   });
   built_ = true;
@@ -106,11 +121,20 @@ void BroadPhaseTrees::fit_tree(int which, const std::vector<FloatBox>& fboxes, u
 }
 
 std::vector<PairTask> BroadPhaseTrees::pair_tasks(unsigned threads) const {
+  std::vector<PairTask> tasks;
+  std::vector<BoxTree::NodePair> nodes, scratch;
+  pair_tasks(threads, tasks, nodes, scratch);
+  return tasks;
+}
+
+void BroadPhaseTrees::pair_tasks(unsigned threads, std::vector<PairTask>& tasks, std::vector<BoxTree::NodePair>& nodes,
+                                 std::vector<BoxTree::NodePair>& scratch) const {
   if (!built_) throw std::logic_error("BroadPhaseTrees::pair_tasks before fit");
   const std::size_t wanted = threads > 1 ? kTasksPerThread * threads : 1;
-  std::vector<PairTask> tasks;
+  tasks.clear();
   const auto add = [&](CollisionKind kind, const BoxTree& a, const BoxTree& b) {
-    for (const BoxTree::NodePair& nodes : a.pair_tasks(b, wanted)) tasks.push_back({kind, nodes});
+    a.pair_tasks(b, wanted, nodes, scratch);
+    for (const BoxTree::NodePair& pair : nodes) tasks.push_back({kind, pair});
   };
   // The largest kind first: the dynamic hand-out then ends on small pieces.
   add(CollisionKind::edge_edge, edge_tree_, edge_tree_);
@@ -119,7 +143,6 @@ std::vector<PairTask> BroadPhaseTrees::pair_tasks(unsigned threads) const {
     add(CollisionKind::point_edge, point_tree_, edge_tree_);
     add(CollisionKind::point_point, point_tree_, point_tree_);
   }
-  return tasks;
 }
 
 Candidates BroadPhaseTrees::candidates(unsigned threads) const {

@@ -38,6 +38,14 @@ class BroadPhaseTrees {
   /// `threads` threads. Throws std::invalid_argument when a later call has another vertex count.
   void fit(std::vector<Box> vertex_boxes, unsigned threads);
 
+  /// The vertex boxes of the last fit(), for a caller that overwrites them in place (same
+  /// count) before refit(): a line search's refit then allocates nothing.
+  std::vector<Box>& vertex_boxes() { return vertex_boxes_; }
+
+  /// Refits the trees, after fit(), to the vertex boxes as they are now (vertex_boxes()), in
+  /// the first fit's order, on up to `threads` threads; allocates nothing.
+  void refit(unsigned threads);
+
   /// Every pair of find_candidates() for the boxes of the last fit(): the pairs whose boxes
   /// overlap (closed, exact) and which share no vertex; sorted, without duplicates. Each pair
   /// is found once by a traversal of two trees (or of one against itself). Up to `threads`
@@ -48,6 +56,12 @@ class BroadPhaseTrees {
   /// (every kind's node pairs, about 32 per thread and kind when threads > 1, one per kind
   /// otherwise); for the streamed broad phase (pair_stream.hpp).
   std::vector<PairTask> pair_tasks(unsigned threads) const;
+
+  /// The same tasks, written into `tasks` (cleared first) with `nodes` and `scratch` for each
+  /// kind's node pairs: kept by a caller that streams repeatedly, they allocate nothing once
+  /// grown.
+  void pair_tasks(unsigned threads, std::vector<PairTask>& tasks, std::vector<BoxTree::NodePair>& nodes,
+                  std::vector<BoxTree::NodePair>& scratch) const;
 
   /// Calls report(FoundPair) for every pair of candidates() below the task (in no particular
   /// order: the trees' pairs whose exact double boxes overlap and which share no vertex) until
@@ -103,6 +117,10 @@ class BroadPhaseTrees {
     return hull(vertex_boxes_[static_cast<std::size_t>(edges_[e][0])], vertex_boxes_[static_cast<std::size_t>(edges_[e][1])]);
   }
   Box point_box(std::size_t i) const { return vertex_boxes_[static_cast<std::size_t>(points_[i])]; }
+  /// The float boxes of the vertices (float_box of vertex_boxes_), kept between fits.
+  std::vector<FloatBox> float_boxes_;
+  /// Builds or refits the four trees from vertex_boxes_.
+  void fit_trees(unsigned threads);
   /// Builds (first fit) or refits one tree (0: edges, 1: triangles, 2: vertices, 3: points)
   /// from the vertices' float boxes, on up to `threads` threads.
   void fit_tree(int which, const std::vector<FloatBox>& fboxes, unsigned threads);

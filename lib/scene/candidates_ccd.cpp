@@ -254,7 +254,8 @@ CcdParams checked_positions(const std::vector<Vec3>& x0, const std::vector<Vec3>
   return {options.min_distance, options.tmax};
 }
 
-/// Hands every candidate to the question on options.threads threads (decide_checked_range:
+/// Hands every candidate to the question on options.threads threads, inside the call's
+/// scene::with_threads (decide_checked_range:
 /// each row checked as it is read, then its boxes, then the question's arithmetic); when the
 /// loop stopped early, validates every row, so that an invalid one is reported (thrown) and
 /// never answered.
@@ -322,10 +323,12 @@ std::vector<CandidateCollision> find_collisions(const std::vector<Vec3>& positio
   const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
-  scene::CollectCollisions<Vec3, std::size_t> question(tests, scene::resolve_threads(options.threads),
-                                                      /*boxes_checked=*/true);
-  decide(positions_t0, positions_t1, candidates, options, question);
-  auto found = question.take();
+  const unsigned threads = scene::resolve_threads(options.threads);
+  auto found = scene::with_threads(threads, [&] {
+    scene::CollectCollisions<Vec3, std::size_t> question(tests, threads, /*boxes_checked=*/true);
+    decide(positions_t0, positions_t1, candidates, options, question);
+    return question.take();
+  });
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   const CandidateSetRange range(candidates, positions_t0, positions_t1, params);
   std::vector<CandidateCollision> all;
@@ -339,8 +342,9 @@ std::optional<TimeInterval> earliest_toi(const std::vector<Vec3>& positions_t0, 
   const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
-  scene::EarliestCollision<Vec3> question(tests, scene::resolve_threads(options.threads), /*boxes_checked=*/true);
-  decide(positions_t0, positions_t1, candidates, options, question);
+  scene::EarliestCollision<Vec3> question(tests, /*boxes_checked=*/true);
+  scene::with_threads(scene::resolve_threads(options.threads),
+                      [&] { decide(positions_t0, positions_t1, candidates, options, question); });
   return question.result();
 }
 
@@ -355,7 +359,8 @@ bool is_collision_free(const std::vector<Vec3>& positions_t0, const std::vector<
   const CcdParams params = checked_positions(positions_t0, positions_t1, options);
   const scene::PairTests<Vec3> tests(positions_t0, positions_t1, params);
   scene::AnyCollision<Vec3> question(tests, /*boxes_checked=*/true);
-  decide(positions_t0, positions_t1, candidates, options, question);
+  scene::with_threads(scene::resolve_threads(options.threads),
+                      [&] { decide(positions_t0, positions_t1, candidates, options, question); });
   return !question.hit();
 }
 

@@ -86,16 +86,17 @@ bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std
   return intersection_free(positions, triangles, 1);
 }
 
+namespace {
+
 // The pairs of triangles whose boxes overlap come from a bounding volume hierarchy over the
 // triangles' boxes traversed against itself (scene/box_tree.hpp: every overlapping pair once,
 // among a few more whose outward-rounded float boxes overlap, dropped by the exact test), in pieces handed out to the threads, and are decided as
 // they are found: nothing is listed, and the first intersecting pair stops every thread.
-bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
-                       unsigned threads) {
-  const scene::SceneCall call;  // the FP environment (not cancellable)
-  scene::require_finite_positions(positions, "positions");
-  scene::require_valid_triangles(triangles, positions.size());
-  threads = scene::resolve_threads(threads);
+
+/// intersection_free on `threads` threads (resolved, inside the call's scene::with_threads),
+/// after the checks of the input.
+bool intersection_free_on(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
+                          unsigned threads) {
   std::vector<Point> points(positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i) points[i] = point(positions[i]);
   std::vector<Simplex> hulls(triangles.size());
@@ -130,6 +131,17 @@ bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std
     return !found.load(std::memory_order_relaxed);
   });
   return !found.load();
+}
+
+}  // namespace
+
+bool intersection_free(const std::vector<Vec3>& positions, const std::vector<std::array<int, 3>>& triangles,
+                       unsigned threads) {
+  const scene::SceneCall call;  // the FP environment (not cancellable)
+  scene::require_finite_positions(positions, "positions");
+  scene::require_valid_triangles(triangles, positions.size());
+  threads = scene::resolve_threads(threads);
+  return scene::with_threads(threads, [&] { return intersection_free_on(positions, triangles, threads); });
 }
 
 }  // namespace exactccd

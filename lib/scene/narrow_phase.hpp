@@ -4,7 +4,7 @@
 // queries of exactccd/ccd.hpp with CcdParams{min_distance, tmax}, as one of three questions
 // (CollectCollisions, EarliestCollision with its shrinking time window, AnyCollision) that take
 // the pairs one at a time on any worker; decide_checked_range hands a caller's list over on
-// several threads (parallel.hpp).
+// several threads (parallel.hpp: oneTBB).
 #pragma once
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <atomic>
 #include <cstddef>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -66,7 +67,7 @@ class PairTests {
   /// The tests of pairs over these positions (kept by reference) for the question params.
   /// The caller has validated both (finite coordinates; scene::validate(SceneOptions)) and
   /// runs the tests under the default floating-point environment (scene::SceneCall on its
-  /// thread, parallel_chunks on the workers): the queries are answered by answer_checked_query.
+  /// thread, parallel_chunks in every task body): the queries are answered by answer_checked_query.
   PairTests(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params)
       : x0_(x0), x1_(x1), params_(params) {}
 
@@ -187,31 +188,33 @@ std::optional<TimeInterval> earliest_of(const std::vector<Collision>& collisions
 template <class Point, class Id>
 class CollectCollisions {
  public:
+  /// For a loop of parallel_chunks(..., threads, ...) started where this is constructed (its
+  /// workers are below worker_slots(threads) there).
   CollectCollisions(const PairTests<Point>& tests, unsigned threads, bool boxes_checked)
-      : tests_(tests), found_(threads), boxes_checked_(boxes_checked) {}
+      : tests_(tests), found_(worker_slots(threads)), boxes_checked_(boxes_checked) {}
 
   bool operator()(const PairSides& r, const Id& id, unsigned worker) {
     if (!boxes_checked_ && !tests_.boxes_overlap(r)) return true;
-    if (const auto toi = tests_.toi(r)) found_[worker].emplace_back(id, *toi);
+    if (const auto toi = tests_.toi(r)) found_[worker].value.emplace_back(id, *toi);
     return true;
   }
 
   /// Every colliding pair found, in no particular order.
   std::vector<std::pair<Id, TimeInterval>> take() {
     std::size_t n = 0;
-    for (const auto& f : found_) n += f.size();
+    for (const auto& f : found_) n += f.value.size();
     std::vector<std::pair<Id, TimeInterval>> all;
     all.reserve(n);
     for (auto& f : found_) {
-      all.insert(all.end(), f.begin(), f.end());
-      std::vector<std::pair<Id, TimeInterval>>().swap(f);
+      all.insert(all.end(), f.value.begin(), f.value.end());
+      std::vector<std::pair<Id, TimeInterval>>().swap(f.value);
     }
     return all;
   }
 
  private:
   const PairTests<Point>& tests_;
-  std::vector<std::vector<std::pair<Id, TimeInterval>>> found_;
+  std::vector<PerWorker<std::vector<std::pair<Id, TimeInterval>>>> found_;
   bool boxes_checked_;
 };
 
@@ -221,15 +224,14 @@ class CollectCollisions {
 template <class Point>
 class EarliestCollision {
  public:
-  EarliestCollision(const PairTests<Point>& tests, unsigned threads, bool boxes_checked)
-      : tests_(tests), best_(threads), boxes_checked_(boxes_checked) {}
+  EarliestCollision(const PairTests<Point>& tests, bool boxes_checked) : tests_(tests), boxes_checked_(boxes_checked) {}
 
   // `bound`: the smallest hi of a collision found by any worker. A pair with no collision in
   // [0, bound] has its time t > bound >= (that collision's time), so its tightest enclosure
   // comes strictly later in the order `earlier`: skipping it cannot change the result, whichever
   // worker found what first.
   template <class Id>
-  bool operator()(const PairSides& r, const Id&, unsigned worker) {
+  bool operator()(const PairSides& r, const Id&, unsigned) {
     // Cheapest first: boxes over [0, h] grown by d (h >= tmax: the broad phase's boxes over
     // [0, tmax]); whether the pair collides at all (a miss is mostly decided by the static
     // filter in ~20 ns); whether its points can be coplanar before h (interval arithmetic on
@@ -244,8 +246,12 @@ class EarliestCollision {
     }
     const auto toi = tests_.toi(r);  // std::nullopt when the query does not collide
     if (!toi) return true;
-    std::optional<TimeInterval>& best = best_[worker];
-    if (!best || earlier(*toi, *best)) best = toi;
+    {
+      // Found collisions are few (the window prunes the later ones): one lock each, no
+      // per-worker state, nothing allocated.
+      const std::lock_guard<std::mutex> lock(best_mutex_);
+      if (!best_ || earlier(*toi, *best_)) best_ = toi;
+    }
     for (double current = bound_.load(); toi->hi < current && !bound_.compare_exchange_weak(current, toi->hi);) {
     }
     return toi->hi != 0;  // a collision exactly at t = 0: nothing is earlier
@@ -253,16 +259,15 @@ class EarliestCollision {
 
   /// The earliest time of impact of every pair decided, or std::nullopt.
   std::optional<TimeInterval> result() const {
-    std::optional<TimeInterval> result;
-    for (const auto& b : best_)
-      if (b && (!result || earlier(*b, *result))) result = b;
-    return result;
+    const std::lock_guard<std::mutex> lock(best_mutex_);
+    return best_;
   }
 
  private:
   const PairTests<Point>& tests_;
   std::atomic<double> bound_{std::numeric_limits<double>::infinity()};
-  std::vector<std::optional<TimeInterval>> best_;
+  mutable std::mutex best_mutex_;
+  std::optional<TimeInterval> best_;  // the earliest in the order `earlier`, under best_mutex_
   bool boxes_checked_;
 };
 

@@ -1,9 +1,9 @@
 // The streamed scene step: the broad phase's pairs go to the narrow phase as they are found,
 // per worker in batches small enough to stay in cache, and are never stored as a whole list.
 //
-// Each worker takes pieces of the trees' traversal (BroadPhaseTrees::pair_tasks) from a shared
-// counter (parallel_chunks: dynamic, so a piece full of colliding pairs does not hold the other
-// workers back), fills its batch with the pairs it finds and hands each full batch to `decide`
+// Each worker takes pieces of the trees' traversal (BroadPhaseTrees::pair_tasks) as oneTBB hands
+// them out (parallel_chunks: work stealing, so a piece full of colliding pairs does not hold
+// the other workers back), fills its batch with the pairs it finds and hands each full batch to `decide`
 // (the narrow-phase question, narrow_phase.hpp) before it traverses on. Memory: one batch per
 // worker, whatever the number of candidates. Between batches the loop checks whether to go on
 // (decide returned false: an early exit; the place for a cancellation check too).
@@ -11,6 +11,7 @@
 
 #include <time.h>
 
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <vector>
@@ -34,26 +35,65 @@ inline double thread_cpu_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+/// A worker of the stream: its batch of found pairs (kStreamBatch reserved once), the pairs it
+/// found per kind and its times. On a cache line of its own.
+struct alignas(64) StreamWorker {
+  std::vector<FoundPair> batch;   ///< the pairs found and not yet decided
+  std::array<std::size_t, 4> found{};  ///< pairs found per kind
+  double busy = 0, narrow = 0;    ///< thread CPU seconds in the loop, and deciding pairs
+  bool ran = false;               ///< whether it took a piece of work
+};
+
+/// What stream_pairs needs besides the trees: the pieces of work and the workers. Kept by a
+/// caller that streams again and again (SceneTrees, for SceneBroadPhase's line search): once
+/// grown, a stream allocates nothing.
+struct StreamBuffers {
+  std::vector<PairTask> tasks;                    ///< BroadPhaseTrees::pair_tasks
+  std::vector<BoxTree::NodePair> nodes, scratch;  ///< its node pairs per kind, and levels
+  std::vector<StreamWorker> workers;              ///< one per worker slot
+};
+
+/// Adds the workers' candidate counts and CPU times to `stats`, the stream's wall time `wall`,
+/// and sets the number of workers that took a piece of work.
+inline void add_stream_stats(const std::vector<StreamWorker>& workers, std::chrono::steady_clock::duration wall,
+                             StepStats& stats) {
+  unsigned ran = 0;
+  for (const StreamWorker& w : workers) {
+    for (std::size_t k = 0; k < 4; ++k) stats.candidates[k] += w.found[k];
+    stats.traversal_thread_seconds += w.busy - w.narrow;
+    stats.narrow_thread_seconds += w.narrow;
+    ran += w.ran ? 1 : 0;
+  }
+  stats.stream_seconds += std::chrono::duration<double>(wall).count();
+  stats.workers = ran;
+}
+
 /// Calls decide(pair, worker) for every candidate pair of the trees (BroadPhaseTrees::visit),
 /// on up to `threads` threads, until some call returns false (then every worker stops after
-/// its current pair). `stats`, when not null, receives the candidate counts per kind and the
-/// loop's times. decide must be safe to call from several workers at once (per-worker state
-/// indexed by `worker`, below `threads`).
+/// its current pair), with `buffers` for the pieces of work and the workers' batches. `stats`,
+/// when not null, receives the candidate counts per kind and the loop's times. decide must be
+/// safe to call from several workers at once (per-worker state indexed by `worker`, below
+/// worker_slots(threads) taken where stream_pairs is called).
 template <class Decide>
-void stream_pairs(const BroadPhaseTrees& trees, unsigned threads, Decide&& decide, StepStats* stats = nullptr) {
+void stream_pairs(const BroadPhaseTrees& trees, unsigned threads, Decide&& decide, StreamBuffers& buffers,
+                  StepStats* stats = nullptr) {
   using Clock = std::chrono::steady_clock;
   const auto wall_start = Clock::now();
-  const std::vector<PairTask> tasks = trees.pair_tasks(threads);
-  struct alignas(64) Worker {
-    std::vector<FoundPair> batch;
-    std::array<std::size_t, 4> found{};
-    double busy = 0, narrow = 0;
-  };
-  std::vector<Worker> workers(std::max(1u, threads));
-  const unsigned ran = parallel_chunks(tasks.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned w) {
-    Worker& me = workers[w];
+  trees.pair_tasks(threads, buffers.tasks, buffers.nodes, buffers.scratch);
+  const std::vector<PairTask>& tasks = buffers.tasks;
+  std::vector<StreamWorker>& workers = buffers.workers;
+  if (workers.size() < worker_slots(threads)) workers.resize(worker_slots(threads));
+  for (StreamWorker& w : workers) {  // every slot's batch reserved now: a slot's first piece allocates nothing
+    w.batch.clear();
+    w.batch.reserve(kStreamBatch);
+    w.found = {};
+    w.busy = w.narrow = 0;
+    w.ran = false;
+  }
+  parallel_chunks(tasks.size(), threads, 1, [&](std::size_t begin, std::size_t end, unsigned w) {
+    StreamWorker& me = workers[w];
     const double busy_start = stats ? thread_cpu_seconds() : 0.0;
-    me.batch.reserve(kStreamBatch);
+    me.ran = true;
     bool go_on = true;
     const auto flush = [&] {
       const double start = stats ? thread_cpu_seconds() : 0.0;
@@ -76,14 +116,7 @@ void stream_pairs(const BroadPhaseTrees& trees, unsigned threads, Decide&& decid
     if (stats) me.busy += thread_cpu_seconds() - busy_start;
     return go_on;
   });
-  if (!stats) return;
-  for (const Worker& w : workers) {
-    for (std::size_t k = 0; k < 4; ++k) stats->candidates[k] += w.found[k];
-    stats->traversal_thread_seconds += w.busy - w.narrow;
-    stats->narrow_thread_seconds += w.narrow;
-  }
-  stats->stream_seconds += std::chrono::duration<double>(Clock::now() - wall_start).count();
-  stats->workers = ran;
+  if (stats) add_stream_stats(workers, Clock::now() - wall_start, *stats);
 }
 
 }  // namespace exactccd::scene

@@ -1,6 +1,7 @@
 // exactccd::SceneBroadPhase (exactccd/scene.hpp): the scene's topology, vertex boxes and
 // bounding volume hierarchies (streamed_step.hpp's SceneTrees) kept across calls; update()
 // refits; the scene functions stream the trees' pairs into the narrow phase.
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -15,18 +16,28 @@
 
 namespace exactccd {
 
-/// Everything kept across calls. Heap-allocated behind SceneBroadPhase's unique_ptr, so it
-/// never moves: `trees` refers to `scene`'s topology.
+/// Everything kept across calls: the scene, its trees (with the buffers of their streams), the
+/// task arena. Heap-allocated behind SceneBroadPhase's unique_ptr, so it never moves: `trees`
+/// refers to `scene`'s topology.
 struct SceneBroadPhase::State {
   State(const Scene& s, const SceneOptions& o)
       : scene(s), options(o), params{o.min_distance, o.tmax}, threads(scene::resolve_threads(o.threads)),
-        trees(scene, params, threads) {}
+        arena(static_cast<int>(threads)),
+        trees(scene::with_threads(threads, [&] { return std::make_unique<scene::SceneTrees>(scene, params, threads); },
+                                  &arena)) {}
+
+  /// f() on the object's threads (scene::with_threads, in the kept arena when one is needed).
+  template <class F>
+  auto run(F&& f) -> decltype(f()) {
+    return scene::with_threads(threads, f, &arena);
+  }
 
   Scene scene;
   SceneOptions options;
   CcdParams params;
   unsigned threads;
-  scene::SceneTrees trees;  // validates the scene, builds the trees
+  scene::KeptArena arena;  // for calls from a thread whose task arena has more slots than `threads`
+  std::unique_ptr<scene::SceneTrees> trees;  // validates the scene, builds the trees
   /// The candidates listed for the current positions, when asked for (candidates()).
   mutable std::mutex candidates_mutex;
   mutable std::optional<SceneCandidates> candidates;
@@ -52,22 +63,22 @@ void SceneBroadPhase::update(const std::vector<Vec3>& positions_t1) {
   scene::require_finite_positions(positions_t1, "positions_t1");
   state_->scene.positions_t1 = positions_t1;
   state_->candidates.reset();
-  state_->trees.refit(state_->scene, state_->params, state_->threads);
+  state_->run([&] { state_->trees->refit(state_->scene, state_->params, state_->threads); });
 }
 
 std::vector<Collision> SceneBroadPhase::find_collisions() const {
   const scene::SceneCall call;  // the FP environment (not cancellable)
-  return scene::find_collisions(state_->scene, state_->trees, state_->params, state_->threads);
+  return state_->run([&] { return scene::find_collisions(state_->scene, *state_->trees, state_->params, state_->threads); });
 }
 
 std::optional<TimeInterval> SceneBroadPhase::earliest_toi() const {
   const scene::SceneCall call;  // the FP environment (not cancellable)
-  return scene::earliest_toi(state_->scene, state_->trees, state_->params, state_->threads);
+  return state_->run([&] { return scene::earliest_toi(state_->scene, *state_->trees, state_->params, state_->threads); });
 }
 
 bool SceneBroadPhase::is_collision_free() const {
   const scene::SceneCall call;  // the FP environment (not cancellable)
-  return !scene::any_collision(state_->scene, state_->trees, state_->params, state_->threads);
+  return state_->run([&] { return !scene::any_collision(state_->scene, *state_->trees, state_->params, state_->threads); });
 }
 
 double SceneBroadPhase::max_collision_free_step() const {
@@ -76,12 +87,13 @@ double SceneBroadPhase::max_collision_free_step() const {
 
 const Scene& SceneBroadPhase::scene() const { return state_->scene; }
 
-const std::vector<std::array<int, 2>>& SceneBroadPhase::edges() const { return state_->trees.topology().edges; }
+const std::vector<std::array<int, 2>>& SceneBroadPhase::edges() const { return state_->trees->topology().edges; }
 
 const SceneCandidates& SceneBroadPhase::candidates() const {
   const scene::SceneCall call;  // the FP environment (not cancellable)
   const std::lock_guard<std::mutex> lock(state_->candidates_mutex);
-  if (!state_->candidates) state_->candidates = state_->trees.trees().candidates(state_->threads);
+  if (!state_->candidates)
+    state_->candidates = state_->run([&] { return state_->trees->trees().candidates(state_->threads); });
   return *state_->candidates;
 }
 

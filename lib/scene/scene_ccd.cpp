@@ -19,15 +19,18 @@ CcdParams params_of(const SceneOptions& options) {
 }
 
 // Each call builds the scene's topology and trees (scene::SceneTrees) and streams their pairs
-// into the narrow phase (scene/streamed_step.hpp); SceneBroadPhase keeps the trees instead.
+// into the narrow phase (scene/streamed_step.hpp), on options.threads threads at most
+// (scene::with_threads); SceneBroadPhase keeps the trees instead.
 
 template <class SceneT>
 std::vector<Collision> find_collisions_in(const SceneT& scene, const SceneOptions& options) {
   const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
-  const scene::SceneTrees trees(scene, params, threads);
-  return scene::find_collisions(scene, trees, params, threads);
+  return scene::with_threads(threads, [&] {
+    const scene::SceneTrees trees(scene, params, threads);
+    return scene::find_collisions(scene, trees, params, threads);
+  });
 }
 
 template <class SceneT>
@@ -35,8 +38,10 @@ std::optional<TimeInterval> earliest_toi_in(const SceneT& scene, const SceneOpti
   const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
-  const scene::SceneTrees trees(scene, params, threads);
-  return scene::earliest_toi(scene, trees, params, threads);
+  return scene::with_threads(threads, [&] {
+    const scene::SceneTrees trees(scene, params, threads);
+    return scene::earliest_toi(scene, trees, params, threads);
+  });
 }
 
 template <class SceneT>
@@ -44,8 +49,10 @@ bool is_collision_free_in(const SceneT& scene, const SceneOptions& options) {
   const scene::SceneCall call(options.cancel);  // FP environment and SceneOptions::cancel
   const CcdParams params = params_of(options);
   const unsigned threads = scene::resolve_threads(options.threads);
-  const scene::SceneTrees trees(scene, params, threads);
-  return !scene::any_collision(scene, trees, params, threads);
+  return scene::with_threads(threads, [&] {
+    const scene::SceneTrees trees(scene, params, threads);
+    return !scene::any_collision(scene, trees, params, threads);
+  });
 }
 
 }  // namespace

@@ -146,9 +146,9 @@ ScenePrimitives topology(const SceneT& s, bool with_points) {
 // the whole step, else the certified enclosure of add_vertex_until; then inflated() (both
 // proofs next to their code). A pair within d at some t in [0, tmax] has overlapping boxes.
 template <class Point>
-std::vector<Box> boxes_of(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params,
-                          unsigned threads) {
-  std::vector<Box> boxes(x0.size());
+void boxes_of(const std::vector<Point>& x0, const std::vector<Point>& x1, const CcdParams& params, unsigned threads,
+              std::vector<Box>& boxes) {
+  boxes.resize(x0.size());
   parallel_ranges(boxes.size(), threads, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       const Vec3 a = lift(x0[v]), b = lift(x1[v]);
@@ -163,19 +163,27 @@ std::vector<Box> boxes_of(const std::vector<Point>& x0, const std::vector<Point>
       boxes[v] = inflated(box, params.min_distance);
     }
   });
-  return boxes;
 }
 
 }  // namespace
 
 std::vector<Box> vertex_boxes(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const CcdParams& params,
                               unsigned threads) {
-  return boxes_of(x0, x1, params, threads);
+  std::vector<Box> boxes;
+  boxes_of(x0, x1, params, threads, boxes);
+  return boxes;
 }
 
 std::vector<Box> vertex_boxes(const std::vector<Vec2>& x0, const std::vector<Vec2>& x1, const CcdParams& params,
                               unsigned threads) {
-  return boxes_of(x0, x1, params, threads);
+  std::vector<Box> boxes;
+  boxes_of(x0, x1, params, threads, boxes);
+  return boxes;
+}
+
+void vertex_boxes(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, const CcdParams& params, unsigned threads,
+                  std::vector<Box>& boxes) {
+  boxes_of(x0, x1, params, threads, boxes);
 }
 
 ScenePrimitives scene_topology(const Scene& s, const CcdParams& params) {

@@ -63,6 +63,11 @@ std::vector<Box> vertex_boxes(const std::vector<Vec3>& positions_t0, const std::
 std::vector<Box> vertex_boxes(const std::vector<Vec2>& positions_t0, const std::vector<Vec2>& positions_t1,
                               const CcdParams& params, unsigned threads = 1);
 
+/// The boxes of vertex_boxes(positions_t0, positions_t1, params, threads) written into `boxes`
+/// (resized; nothing allocated when it has the size already: a line search's refit).
+void vertex_boxes(const std::vector<Vec3>& positions_t0, const std::vector<Vec3>& positions_t1,
+                  const CcdParams& params, unsigned threads, std::vector<Box>& boxes);
+
 /// Throws std::invalid_argument unless params.min_distance is finite and >= 0 and params.tmax
 /// is in (0, 1].
 void require_valid_params(const CcdParams& params);

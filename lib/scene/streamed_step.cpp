@@ -8,6 +8,7 @@
 #include "numeric/fp_environment.hpp"
 #include "scene/narrow_phase.hpp"
 #include "scene/pair_stream.hpp"
+#include "scene/parallel.hpp"
 
 namespace exactccd::scene {
 namespace {
@@ -70,9 +71,12 @@ using PointOf = typename decltype(SceneT::positions_t0)::value_type;
 /// over has overlapping boxes).
 template <class SceneT, class Question>
 void stream_into(const SceneT& scene, const SceneTrees& st, unsigned threads, Question& question, StepStats* stats) {
+  const Kept<StreamBuffers>::Loan kept(&st.stream_buffers());
+  StreamBuffers own;  // when another stream holds the kept ones (nothing allocated otherwise)
   stream_pairs(
       st.trees(), threads,
-      [&](const FoundPair& p, unsigned w) { return question(sides_of(scene, st.topology(), p), p, w); }, stats);
+      [&](const FoundPair& p, unsigned w) { return question(sides_of(scene, st.topology(), p), p, w); },
+      kept.get() != nullptr ? *kept.get() : own, stats);
 }
 
 template <class SceneT>
@@ -91,7 +95,7 @@ template <class SceneT>
 std::optional<TimeInterval> earliest_in(const SceneT& scene, const SceneTrees& st, const CcdParams& params,
                                         unsigned threads, StepStats* stats) {
   const PairTests<PointOf<SceneT>> tests(scene.positions_t0, scene.positions_t1, params);
-  EarliestCollision<PointOf<SceneT>> question(tests, threads, /*boxes_checked=*/true);
+  EarliestCollision<PointOf<SceneT>> question(tests, /*boxes_checked=*/true);
   stream_into(scene, st, threads, question, stats);
   return question.result();
 }
@@ -117,7 +121,8 @@ SceneTrees::SceneTrees(const Scene2d& scene, const CcdParams& params, unsigned t
 }
 
 void SceneTrees::refit(const Scene& scene, const CcdParams& params, unsigned threads) {
-  trees_.fit(vertex_boxes(scene.positions_t0, scene.positions_t1, params, threads), threads);
+  vertex_boxes(scene.positions_t0, scene.positions_t1, params, threads, trees_.vertex_boxes());
+  trees_.refit(threads);
 }
 
 std::vector<Collision> find_collisions(const Scene& s, const SceneTrees& t, const CcdParams& p, unsigned threads,
@@ -148,10 +153,12 @@ std::vector<Collision> find_collisions(const Scene& scene, const SceneOptions& o
   validate(options);
   const CcdParams params{options.min_distance, options.tmax};
   const unsigned threads = resolve_threads(options.threads);
-  const auto start = std::chrono::steady_clock::now();
-  const SceneTrees trees(scene, params, threads);
-  if (stats) stats->setup_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return find_collisions(scene, trees, params, threads, stats);
+  return with_threads(threads, [&] {
+    const auto start = std::chrono::steady_clock::now();
+    const SceneTrees trees(scene, params, threads);
+    if (stats) stats->setup_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return find_collisions(scene, trees, params, threads, stats);
+  });
 }
 
 }  // namespace exactccd::scene

@@ -10,6 +10,8 @@
 
 #include "exactccd/scene.hpp"
 #include "scene/candidate_finder.hpp"
+#include "scene/pair_stream.hpp"
+#include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene/step_stats.hpp"
 
@@ -27,17 +29,22 @@ class SceneTrees {
   SceneTrees(const SceneTrees&) = delete;
   SceneTrees& operator=(const SceneTrees&) = delete;
 
-  /// Refits the trees to the scene's current positions (same topology and vertex count).
+  /// Refits the trees to the scene's current positions (same topology and vertex count), the
+  /// vertex boxes computed in place: nothing is allocated.
   void refit(const Scene& scene, const CcdParams& params, unsigned threads);
 
   /// The scene's vertex-face vertices, edges and isolated points (no candidates).
   const ScenePrimitives& topology() const { return prim_; }
   /// The trees.
   const BroadPhaseTrees& trees() const { return trees_; }
+  /// The buffers of the streams over the trees (pieces of work, the workers' batches), kept
+  /// with them and lent to one stream at a time (a concurrent stream uses its own).
+  Kept<StreamBuffers>& stream_buffers() const { return stream_buffers_; }
 
  private:
   ScenePrimitives prim_;
   BroadPhaseTrees trees_;
+  mutable Kept<StreamBuffers> stream_buffers_;
 };
 
 /// Every colliding pair of the scene (the scene's find_collisions), over the trees' pairs as

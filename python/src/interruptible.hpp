@@ -2,7 +2,10 @@
 // released while the interpreter's thread checks for signals every 100 ms; on a signal whose
 // handler raises (KeyboardInterrupt for Ctrl-C) it sets the call's cancellation flag
 // (SceneOptions::cancel, or the batch loop's CancelScope), waits for the workers to stop (they
-// stop between chunks of a few hundred queries: well under a second) and raises that exception.
+// stop between chunks of a few hundred queries, the loop's oneTBB task group cancelled: well
+// under a second) and raises that exception. The helper thread stays a plain std::thread: the
+// interpreter's thread must stay free to poll for signals, and oneTBB may have no worker to
+// spare (one core). oneTBB keeps its idle worker threads for the next call.
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -57,7 +60,7 @@ auto interruptible(F&& f) {
   return result.get();
 }
 
-/// Queries per chunk of the thread pool: small enough to balance queries of very different
+/// Queries per chunk of the loop (oneTBB, scene/parallel.hpp): small enough to balance queries of very different
 /// cost (an exact fallback costs 100x a filtered answer), large enough to amortise the hand-out.
 constexpr std::size_t kChunk = 64;
 
@@ -65,13 +68,14 @@ constexpr std::size_t kChunk = 64;
 /// for filtered answers), larger ones interruptibly (a helper thread, about 50 us to start).
 constexpr std::size_t kInterruptibleBatch = 4096;
 
-/// body(begin, end) over chunks of [0, n) on `workers` threads, the GIL released; a batch of
-/// more than kInterruptibleBatch queries runs interruptibly (Ctrl-C). Called with the GIL.
+/// body(begin, end) over chunks of [0, n) on at most `workers` threads (scene::call_chunks:
+/// oneTBB), the GIL released; a batch of more than kInterruptibleBatch queries runs
+/// interruptibly (Ctrl-C). Called with the GIL.
 template <class Body>
 void run_batch(std::size_t n, unsigned workers, Body&& body) {
   const auto loop = [&](const std::atomic<bool>* cancel) {
-    const scene::CancelScope cancel_scope(cancel);  // parallel_chunks stops when it is set
-    scene::parallel_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
+    const scene::CancelScope cancel_scope(cancel);  // the loop's task group is cancelled when it is set
+    scene::call_chunks(n, workers, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
       body(begin, end);
       return true;
     });

@@ -1,7 +1,7 @@
 // The Python module exactccd._exactccd (python/exactccd/__init__.py re-exports it): NumPy batch
 // functions over every primitive kind (one template over lib/kinds, never a copy per kind), the
 // scene functions on arrays, and the mesh reader. The GIL is released while the library works;
-// batches are spread over threads with the scene narrow phase's pool (lib/scene/parallel.hpp);
+// batches are spread over threads with the library's oneTBB loops (lib/scene/parallel.hpp);
 // the batch narrow phase over the caller's own candidates (exactccd/candidates.hpp).
 //
 // Errors: the library's std::invalid_argument becomes ValueError (pybind11's own translation),

@@ -48,9 +48,7 @@
 #include "filter/volume_exclusion.hpp"
 #include "methods/methods.hpp"
 
-#ifndef EXACTCCD_SAMPLE_QUERIES_DIR
-#define EXACTCCD_SAMPLE_QUERIES_DIR "/work/shared/data/sample-queries"
-#endif
+// EXACTCCD_SAMPLE_QUERIES_DIR: the CMake cache variable of that name (tests/CMakeLists.txt).
 
 namespace exactccd {
 namespace {

@@ -5,12 +5,19 @@
 // the narrow phase alone over the same queries. One thread unless named. Figures: docs/scene.md.
 //
 //   build/candidates_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// With --frames=T0,T1 (two mesh files of one step, e.g. the Scalable CCD dataset's cloth-funnel
+// frames) also BM_FramesCandidates*: the functions over that step's listed candidates on 1 and 2
+// threads.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cstring>
 #include <map>
+#include <string>
 
 #include "exactccd/exactccd.hpp"
+#include "io/mesh_file.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 
@@ -26,13 +33,10 @@ struct Fixture {
   std::vector<EdgeEdgeQuery> ee;
 };
 
-const Fixture& fixture(int resolution) {
-  static std::map<int, Fixture> cache;  // benchmark-local, filled on the main thread
-  auto it = cache.find(resolution);
-  if (it != cache.end()) return it->second;
+/// The step `scene` with its broad-phase candidates as a caller's list and as queries.
+Fixture fixture_of(Scene scene) {
   Fixture f;
-  const scene::MovingMesh mesh = scene::procedural_scene("cloth", resolution, 1);
-  f.scene = Scene{mesh.positions_t0, mesh.positions_t1, mesh.triangles, {}, {}};
+  f.scene = std::move(scene);
   const scene::ScenePrimitives prim = scene::scene_primitives(f.scene);
   const auto& e = prim.edges;
   for (const auto& [v, t] : prim.candidates.vertex_face) {
@@ -44,7 +48,16 @@ const Fixture& fixture(int resolution) {
     f.candidates.edge_edge.push_back({e[i][0], e[i][1], e[j][0], e[j][1]});
     f.ee.push_back(scene::edge_edge_query(f.scene, e[i], e[j]));
   }
-  return cache.emplace(resolution, std::move(f)).first->second;
+  return f;
+}
+
+const Fixture& fixture(int resolution) {
+  static std::map<int, Fixture> cache;  // benchmark-local, filled on the main thread
+  auto it = cache.find(resolution);
+  if (it != cache.end()) return it->second;
+  const scene::MovingMesh mesh = scene::procedural_scene("cloth", resolution, 1);
+  return cache.emplace(resolution, fixture_of(Scene{mesh.positions_t0, mesh.positions_t1, mesh.triangles, {}, {}}))
+      .first->second;
 }
 
 void label(benchmark::State& state, const Fixture& f) {
@@ -167,10 +180,61 @@ BENCHMARK(BM_DisjointCandidatesBoxTest)->Arg(64)->Arg(220)->Unit(benchmark::kMil
 BENCHMARK(BM_SceneMaxStep) EXACTCCD_SIZES;
 BENCHMARK(BM_CandidatesMaxStep) EXACTCCD_SIZES;
 BENCHMARK(BM_SceneFindCollisions) EXACTCCD_SIZES;
-BENCHMARK(BM_CandidatesFindCollisions)->Args({32, 1})->Args({64, 1})->Args({64, 2})->UseRealTime()->Unit(
+BENCHMARK(BM_CandidatesFindCollisions)
+    ->Args({32, 1})->Args({64, 1})->Args({64, 2})->Args({220, 1})->Args({220, 2})->UseRealTime()->Unit(
     benchmark::kMillisecond);
 BENCHMARK(BM_PrimitiveToiLoop) EXACTCCD_SIZES;
 
+/// The step of two mesh files (--frames) and its broad-phase candidates.
+Fixture& frames() {
+  static Fixture f;  // benchmark-local, filled on the main thread before the benchmarks run
+  return f;
+}
+
+/// find_collisions over the frames' listed candidates on state.range(0) threads (wall time):
+/// what a simulator with its own broad phase calls.
+void BM_FramesCandidates(benchmark::State& state) {
+  const Fixture& f = frames();
+  const SceneOptions options{static_cast<unsigned>(state.range(0))};
+  for (auto _ : state)
+    benchmark::DoNotOptimize(find_collisions(f.scene.positions_t0, f.scene.positions_t1, f.candidates, options));
+  label(state, f);
+}
+
+/// max_collision_free_step over the same list (the earliest TOI, pruned as it goes).
+void BM_FramesCandidatesMaxStep(benchmark::State& state) {
+  const Fixture& f = frames();
+  const SceneOptions options{static_cast<unsigned>(state.range(0))};
+  for (auto _ : state)
+    benchmark::DoNotOptimize(max_collision_free_step(f.scene.positions_t0, f.scene.positions_t1, f.candidates, options));
+  label(state, f);
+}
+
+/// --frames=T0,T1: the step of two mesh files (e.g. the Scalable CCD dataset's cloth-funnel
+/// frames), its candidates listed once; registers BM_FramesCandidates* on 1 and 2 threads.
+void register_frames(const std::string& spec) {
+  const std::size_t comma = spec.find(',');
+  const io::TriangleMesh m0 = io::read_mesh(spec.substr(0, comma)), m1 = io::read_mesh(spec.substr(comma + 1));
+  frames() = fixture_of(Scene{m0.vertices, m1.vertices, m0.triangles, {}, {}});
+  benchmark::RegisterBenchmark("BM_FramesCandidates", BM_FramesCandidates)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+  benchmark::RegisterBenchmark("BM_FramesCandidatesMaxStep", BM_FramesCandidatesMaxStep)
+      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp(argv[i], "--frames=", 9) == 0) {
+      register_frames(argv[i] + 9);
+      for (int j = i; j + 1 < argc; ++j) argv[j] = argv[j + 1];
+      --argc;
+      --i;
+    }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -27,12 +27,6 @@
 // tools/lib/broad_phase on one thread, at three cell sides, against BM_StepBroadStream/BM_FramesBroadStream
 // on one thread (and BM_StepSweep, the serial sort and sweep, which lists its candidates).
 #include <benchmark/benchmark.h>
-#ifdef EXACTCCD_BENCH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-#endif
 
 #include <sys/resource.h>
 
@@ -224,26 +218,29 @@ void BM_StepNarrow(benchmark::State& state, M method) {
   const unsigned threads = static_cast<unsigned>(state.range(1));
   const auto& vf = f.prim.candidates.vertex_face;
   const auto& ee = f.prim.candidates.edge_edge;
-  std::vector<std::size_t> hits(threads);
+  std::size_t total = 0;
   for (auto _ : state) {
-    std::fill(hits.begin(), hits.end(), 0);
-    scene::parallel_chunks(vf.size() + ee.size(), threads, 64, [&](std::size_t begin, std::size_t end, unsigned w) {
-      for (std::size_t k = begin; k < end; ++k) {
-        if (k < vf.size())
-          hits[w] += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), method).has_value();
-        else {
-          const auto& pair = ee[k - vf.size()];
-          hits[w] += toi(scene::edge_edge_query(f.scene, f.prim.edges[pair[0]], f.prim.edges[pair[1]]), method)
-                         .has_value();
+    total = scene::with_threads(threads, [&] {
+      std::vector<scene::PerWorker<std::size_t>> hits(scene::worker_slots(threads));
+      scene::parallel_chunks(vf.size() + ee.size(), threads, 64, [&](std::size_t begin, std::size_t end, unsigned w) {
+        for (std::size_t k = begin; k < end; ++k) {
+          if (k < vf.size())
+            hits[w].value += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), method).has_value();
+          else {
+            const auto& pair = ee[k - vf.size()];
+            hits[w].value += toi(scene::edge_edge_query(f.scene, f.prim.edges[pair[0]], f.prim.edges[pair[1]]), method)
+                                 .has_value();
+          }
         }
-      }
-      return true;
+        return true;
+      });
+      std::size_t sum = 0;
+      for (const auto& h : hits) sum += h.value;
+      return sum;
     });
-    benchmark::DoNotOptimize(hits.data());
+    benchmark::DoNotOptimize(total);
   }
   step_label(state, f);
-  std::size_t total = 0;
-  for (std::size_t h : hits) total += h;
   state.counters["collisions"] = static_cast<double>(total);
 }
 
@@ -267,12 +264,15 @@ void BM_StepWhole(benchmark::State& state) {
 void BM_StepBroadStream(benchmark::State& state) {
   const StepFixture& f = step_fixture(static_cast<int>(state.range(0)));
   const unsigned threads = static_cast<unsigned>(state.range(1));
-  std::vector<std::size_t> seen(threads);
-  for (auto _ : state) {
-    const scene::SceneTrees trees(f.scene, CcdParams{}, threads);
-    scene::stream_pairs(trees.trees(), threads, [&](const scene::FoundPair&, unsigned w) { return ++seen[w] > 0; });
-    benchmark::DoNotOptimize(seen.data());
-  }
+  for (auto _ : state)
+    scene::with_threads(threads, [&] {
+      std::vector<scene::PerWorker<std::size_t>> seen(scene::worker_slots(threads));
+      scene::StreamBuffers buffers;
+      const scene::SceneTrees trees(f.scene, CcdParams{}, threads);
+      scene::stream_pairs(
+          trees.trees(), threads, [&](const scene::FoundPair&, unsigned w) { return ++seen[w].value > 0; }, buffers);
+      benchmark::DoNotOptimize(seen.data());
+    });
   step_label(state, f);
 }
 
@@ -434,21 +434,21 @@ void BM_FramesNarrow(benchmark::State& state, M method) {
   const unsigned threads = static_cast<unsigned>(state.range(0));
   const auto& vf = f.prim.candidates.vertex_face;
   const auto& ee = f.prim.candidates.edge_edge;
-  std::vector<std::size_t> hits(threads);
-  for (auto _ : state) {
-    scene::parallel_chunks(vf.size() + ee.size(), threads, 64, [&](std::size_t begin, std::size_t end, unsigned w) {
-      for (std::size_t k = begin; k < end; ++k) {
-        if (k < vf.size())
-          hits[w] += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), method).has_value();
-        else
-          hits[w] += toi(scene::edge_edge_query(f.scene, f.prim.edges[ee[k - vf.size()][0]], f.prim.edges[ee[k - vf.size()][1]]),
-                         method)
-                         .has_value();
-      }
-      return true;
+  for (auto _ : state)
+    scene::with_threads(threads, [&] {
+      std::vector<scene::PerWorker<std::size_t>> hits(scene::worker_slots(threads));
+      scene::parallel_chunks(vf.size() + ee.size(), threads, 64, [&](std::size_t begin, std::size_t end, unsigned w) {
+        for (std::size_t k = begin; k < end; ++k) {
+          const auto query = k < vf.size() ? toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), method)
+                                           : toi(scene::edge_edge_query(f.scene, f.prim.edges[ee[k - vf.size()][0]],
+                                                                        f.prim.edges[ee[k - vf.size()][1]]),
+                                                 method);
+          hits[w].value += query.has_value();
+        }
+        return true;
+      });
+      benchmark::DoNotOptimize(hits.data());
     });
-    benchmark::DoNotOptimize(hits.data());
-  }
   frames_label(state);
 }
 
@@ -466,12 +466,15 @@ void BM_FramesEarliest(benchmark::State& state) {
 
 void BM_FramesBroadStream(benchmark::State& state) {
   const unsigned threads = static_cast<unsigned>(state.range(0));
-  std::vector<std::size_t> seen(threads);
-  for (auto _ : state) {
-    const scene::SceneTrees trees(frames().scene, CcdParams{}, threads);
-    scene::stream_pairs(trees.trees(), threads, [&](const scene::FoundPair&, unsigned w) { return ++seen[w] > 0; });
-    benchmark::DoNotOptimize(seen.data());
-  }
+  for (auto _ : state)
+    scene::with_threads(threads, [&] {
+      std::vector<scene::PerWorker<std::size_t>> seen(scene::worker_slots(threads));
+      scene::StreamBuffers buffers;
+      const scene::SceneTrees trees(frames().scene, CcdParams{}, threads);
+      scene::stream_pairs(
+          trees.trees(), threads, [&](const scene::FoundPair&, unsigned w) { return ++seen[w].value > 0; }, buffers);
+      benchmark::DoNotOptimize(seen.data());
+    });
   frames_label(state);
 }
 
@@ -483,58 +486,6 @@ void BM_FramesGrid(benchmark::State& state) {
   frames_label(state);
 }
 
-#ifdef EXACTCCD_BENCH_TBB
-// The project's pool (parallel.hpp: std::threads started per call, chunks handed out from one
-// atomic counter) against oneTBB's work stealing on the same two loops, for docs/scene.md's
-// choice: the narrow phase over the listed candidates (uneven costs) and the streamed broad
-// phase's pieces (tree pair tasks, counted).
-
-/// BM_FramesNarrow<filtered> with tbb::parallel_for (auto partitioner) in a task arena of
-/// state.range(0) threads.
-void BM_FramesNarrowTbb(benchmark::State& state) {
-  const FramesFixture& f = frames();
-  const int threads = static_cast<int>(state.range(0));
-  const auto& vf = f.prim.candidates.vertex_face;
-  const auto& ee = f.prim.candidates.edge_edge;
-  tbb::task_arena arena(threads);
-  tbb::enumerable_thread_specific<std::size_t> hits(0);
-  for (auto _ : state)
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vf.size() + ee.size()), [&](const auto& range) {
-        const numeric::DefaultFpEnvironment fp_environment;
-        std::size_t& h = hits.local();
-        for (std::size_t k = range.begin(); k < range.end(); ++k) {
-          if (k < vf.size())
-            h += toi(scene::vertex_face_query(f.scene, vf[k][0], vf[k][1]), Method::filtered).has_value();
-          else
-            h += toi(scene::edge_edge_query(f.scene, f.prim.edges[ee[k - vf.size()][0]], f.prim.edges[ee[k - vf.size()][1]]),
-                     Method::filtered)
-                     .has_value();
-        }
-      });
-    });
-  frames_label(state);
-}
-
-/// BM_FramesBroadStream's loop with tbb::parallel_for over the same pieces (grain 1).
-void BM_FramesBroadStreamTbb(benchmark::State& state) {
-  const int threads = static_cast<int>(state.range(0));
-  tbb::task_arena arena(threads);
-  tbb::enumerable_thread_specific<std::size_t> seen(0);
-  for (auto _ : state) {
-    const scene::SceneTrees trees(frames().scene, CcdParams{}, static_cast<unsigned>(threads));
-    const auto tasks = trees.trees().pair_tasks(static_cast<unsigned>(threads));
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1), [&](const auto& range) {
-        std::size_t& n = seen.local();
-        for (std::size_t k = range.begin(); k < range.end(); ++k)
-          trees.trees().visit(tasks[k], [&](const scene::FoundPair&) { return ++n > 0; });
-      });
-    });
-  }
-  frames_label(state);
-}
-#endif
 
 /// --frames=T0,T1: registers the BM_Frames* benchmarks on that step (1 and 2 threads).
 void register_frames(const std::string& spec) {
@@ -555,12 +506,6 @@ void register_frames(const std::string& spec) {
       ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
   benchmark::RegisterBenchmark("BM_FramesNarrow/naive", BM_FramesNarrow<tools::Method>, tools::Method::naive)
       ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
-#ifdef EXACTCCD_BENCH_TBB
-  benchmark::RegisterBenchmark("BM_FramesNarrowTbb/filtered", BM_FramesNarrowTbb)
-      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
-  benchmark::RegisterBenchmark("BM_FramesBroadStreamTbb", BM_FramesBroadStreamTbb)
-      ->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond)->MinTime(0.3);
-#endif
 }
 
 int main(int argc, char** argv) {

@@ -1,8 +1,9 @@
 // Tight Inclusion (Wang et al. 2021; Continuous-Collision-Detection/Tight-Inclusion) against
 // exactccd's filtered method and the textbook double-precision cubic, on the same vertex-face
-// and edge-edge query files, timed in one run, interleaved (as `exactccd bench`). NOT part of
-// exactccd's build: tools/bench/tight_inclusion.sh compiles it against a Tight Inclusion build
-// that the caller made outside this repository (docs/performance.md, "Tight Inclusion").
+// and edge-edge query files, timed in one run, interleaved (as `exactccd bench`). The harness's
+// own source only: nothing in this repository builds or links it, nor Tight Inclusion (the
+// figures were taken with it built by hand beside the repository against Tight Inclusion
+// ca9a8c2, docs/performance.md, "Tight Inclusion").
 //
 // Tight Inclusion is called as its own benchmark program (app/main.cpp) calls it: err = (-1,
 // -1, -1) (computed per query), minimum separation 0, tolerance 1e-6, t_max 1, at most 10^6

@@ -299,11 +299,11 @@ std::pair<std::size_t, std::size_t> BatchOptions::shard_range(std::size_t total)
   return {total * shard_index / shard_count, total * (shard_index + 1) / shard_count};
 }
 
-unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
-                      const std::function<void(std::size_t)>& task, const char* label) {
-  // The library's pool (scene::parallel_chunks: dynamic chunks, the first exception stops the
-  // loop and is rethrown, fewer threads when the system refuses one), one index per chunk; the
-  // calling thread (worker 0) also draws the progress bar between its indices.
+void parallel_for(std::size_t begin, std::size_t end, unsigned threads, const std::function<void(std::size_t)>& task,
+                  const char* label) {
+  // The library's loop (scene::call_chunks: oneTBB on at most `threads` threads, the first
+  // exception stops the loop and is rethrown), one index per chunk; the calling thread (worker
+  // 0: the arena's reserved slot) also draws the progress bar between its indices.
   const std::size_t total = end > begin ? end - begin : 0;
   std::atomic<std::size_t> done{0};
   const bool tty = isatty(fileno(stderr)) != 0;
@@ -318,8 +318,7 @@ unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
     std::fflush(stderr);
     drawn = true;
   };
-  const unsigned used = scene::parallel_chunks(total, std::max(1u, threads), 1,
-                                               [&](std::size_t b, std::size_t e, unsigned worker) {
+  scene::call_chunks(total, std::max(1u, threads), 1, [&](std::size_t b, std::size_t e, unsigned worker) {
     for (std::size_t i = b; i < e; ++i) task(begin + i);
     done.fetch_add(e - b);
     if (worker == 0 && tty) {
@@ -335,7 +334,6 @@ unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
     draw(done.load());
     std::fputc('\n', stderr);
   }
-  return used;
 }
 
 StageCounts linear_stage_counts(const StageCounters& s) {

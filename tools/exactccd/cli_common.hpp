@@ -238,12 +238,10 @@ std::vector<OptionSpec> batch_option_specs();
 /// The batch options given (defaults when absent).
 BatchOptions batch_options(const ParsedOptions& options);
 
-/// Runs task(i) for i in [begin, end) on up to `threads` threads (never more than there are
-/// indices; when the system refuses a thread, the ones started do the work: same results);
-/// shows a progress bar on stderr when stderr is a terminal and the run takes more than two
-/// seconds. Exceptions are rethrown. Returns the number of threads that worked (the calling
-/// thread included).
-unsigned parallel_for(std::size_t begin, std::size_t end, unsigned threads,
-                      const std::function<void(std::size_t)>& task, const char* label);
+/// Runs task(i) for i in [begin, end) on up to `threads` threads (oneTBB: never more than there
+/// are indices, fewer when the machine has fewer; same results); shows a progress bar on stderr
+/// when stderr is a terminal and the run takes more than two seconds. Exceptions are rethrown.
+void parallel_for(std::size_t begin, std::size_t end, unsigned threads, const std::function<void(std::size_t)>& task,
+                  const char* label);
 
 }  // namespace exactccd::cli

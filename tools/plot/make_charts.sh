@@ -7,8 +7,7 @@
 # bench-separation.json,bench-summary.md} and, by tools/plot/scene_step.sh (build/scene_bench: the scene
 # step per phase and thread count, 1.8k to 1.0M triangles), docs/figures/{scene_step.json,
 # scene_step_memory.json,scene_step.md,scene_step.png} (and, when their inputs are there, the
-# cloth-ball step: scene_frames.{json,txt}, and against the Scalable CCD CPU pipeline when
-# EXACTCCD_ANCHOR_BUILD names its build: scene_anchor.md), and by tools/plot/scene_scaling.sh (the
+# cloth-ball step: scene_frames.{json,txt}), and by tools/plot/scene_scaling.sh (the
 # whole `exactccd scene` step up to 1M triangles) docs/figures/scene_scaling.{csv,png}.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -38,7 +37,7 @@ echo "== $exe stability --threads 2 --out $out/stability.csv"
 /usr/bin/python3 tools/plot/stability.py "$out/stability.csv" "$out/stability.png"
 echo "== bash tools/plot/scene_step.sh"
 bash tools/plot/scene_step.sh > /dev/null
-echo "written: $out/scene_step.json $out/scene_step_memory.json $out/scene_step.md $out/scene_step.png (scene_frames.*, scene_anchor.md when their inputs are there)"
+echo "written: $out/scene_step.json $out/scene_step_memory.json $out/scene_step.md $out/scene_step.png (scene_frames.* when the frames are there)"
 echo "== bash tools/plot/scene_scaling.sh"
 bash tools/plot/scene_scaling.sh > /dev/null
 echo "written: $out/scene_scaling.csv $out/scene_scaling.png"

@@ -5,11 +5,10 @@
 # find_collisions step per size, each in a fresh process (getrusage ru_maxrss). Writes
 # docs/figures/scene_step.json, scene_step_memory.json, scene_step.md and scene_step.png.
 # Needs a Release build of scene_bench and candidates_bench in build/ and Debian's python3-matplotlib.
-# Also a caller's candidates with disjoint boxes (candidates_bench, docs/figures/candidates_disjoint.txt),
-# the cloth-ball step (BM_Frames*, docs/figures/scene_frames.{json,txt}) and the side-by-side
-# run against the Scalable CCD CPU pipeline (docs/figures/scene_anchor.md) when their inputs are
+# Also a caller's candidates with disjoint boxes (candidates_bench, docs/figures/candidates_disjoint.txt)
+# and the cloth-ball step (BM_Frames*, docs/figures/scene_frames.{json,txt}) when its frames are
 # there (below).
-# Usage: [EXACTCCD_ANCHOR_BUILD=DIR] bash tools/plot/scene_step.sh   (about 30 minutes on an idle 2-core machine)
+# Usage: bash tools/plot/scene_step.sh   (about 30 minutes on an idle 2-core machine)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 out=docs/figures
@@ -32,8 +31,7 @@ cat "$out/scene_step.md"
 # The cloth-ball step of the Scalable CCD dataset (when a checkout is beside the repository:
 # ../ext/Sample-Scalable-CCD-Data or $SCALABLE_CCD_DATA): the BM_Frames* benchmarks (whole
 # find_collisions and earliest_toi, streamed broad phase, narrow phase filtered and naive over
-# the same candidates, 1 and 2 threads; medians of 3), then, when $EXACTCCD_ANCHOR_BUILD names
-# the anchor's build (tools/bench/anchor/build.sh), exactccd scene against it (anchor_step.sh).
+# the same candidates, 1 and 2 threads; medians of 3).
 data=${SCALABLE_CCD_DATA:-../ext/Sample-Scalable-CCD-Data}
 frames="$data/cloth-ball/frames"
 if [ -f "$frames/cloth_ball92.ply" ]; then
@@ -43,8 +41,6 @@ if [ -f "$frames/cloth_ball92.ply" ]; then
     --benchmark_out="$out/scene_frames.json" --benchmark_out_format=json > "$out/scene_frames.txt"
   echo "== load after: $(cut -d' ' -f1-3 /proc/loadavg)" >> "$out/scene_frames.txt"
   cat "$out/scene_frames.txt"
-  bash tools/plot/anchor_step.sh "${EXACTCCD_ANCHOR_BUILD:-}" "$frames/cloth_ball92.ply" "$frames/cloth_ball93.ply" 3 \
-    | tee "$out/scene_anchor.md"
 else
   echo "SKIPPED: the cloth-ball frames ($frames) are absent"
 fi

@@ -1,6 +1,7 @@
-// The anchor of docs/scene.md's side-by-side measurement (built by tools/bench/anchor/build.sh
-// against the public Scalable CCD and Tight Inclusion sources, outside this repository; not part
-// of exactccd's build): one step of a mesh as the Scalable CCD CPU pipeline runs it. Broad phase:
+// The anchor of docs/scene.md's side-by-side measurement: one step of a mesh as the Scalable CCD
+// CPU pipeline runs it. The harness's own source only: nothing in this repository builds or links
+// it, nor the peer projects it calls (the figures were taken with it built by hand beside the
+// repository against Scalable CCD 8f9347c and Tight Inclusion ca9a8c2, docs/scene.md). Broad phase:
 // Scalable CCD's sort and sweep on oneTBB (vertex boxes from both frames, edge and face boxes their
 // hulls; vertex-face pairs by two-list sweep, edge-edge by one-list sweep, pairs sharing a vertex
 // dropped). Narrow phase: Tight Inclusion's CPU vertexFaceCCD / edgeEdgeCCD (tolerance 1e-6,
