@@ -19,6 +19,8 @@ function(exactccd_add_plugin name source)
 endfunction()
 exactccd_add_plugin(naive_plugin fuzz/plugins/naive_plugin.cpp)
 exactccd_add_plugin(naive_tolerance_plugin fuzz/plugins/naive_tolerance_plugin.cpp)
+exactccd_add_plugin(exact_plugin fuzz/plugins/exact_plugin.cpp)
+exactccd_add_plugin(sampled_distance_plugin fuzz/plugins/sampled_distance_plugin.cpp)
 
 if(EXACTCCD_BUILD_TESTS)
   exactccd_add_plugin(plugin_vf_only tests/cli/plugin_vf_only.cpp)
