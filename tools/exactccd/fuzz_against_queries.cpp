@@ -114,19 +114,6 @@ Generated generate(std::size_t i, const FuzzRun& run, const Groups& groups, cons
   return out;
 }
 
-/// "-1, 23..60" of a sorted set of k (as the report prints it).
-std::string k_list(const std::set<int>& ks) {
-  std::string out;
-  for (auto it = ks.begin(); it != ks.end();) {
-    const int first = *it;
-    int last = first;
-    while (++it != ks.end() && *it == last + 1) ++last;
-    out += (out.empty() ? "" : ", ") + std::to_string(first);
-    if (last > first) out += (last == first + 1 ? ", " : "..") + std::to_string(last);
-  }
-  return out;
-}
-
 double& coordinate(Rows& r, int c, int dimension) {
   Vec3& p = r[static_cast<std::size_t>(c / dimension)];
   return c % dimension == 0 ? p.x : (c % dimension == 1 ? p.y : p.z);
@@ -207,7 +194,7 @@ void shrink(const Generated& q, Outcome& o, const Plugin& plugin, const FuzzKind
     const auto least = failing.upper_bound(kKMin);  // the smallest k >= 0, if any
     const int k = least != failing.end() ? *least : kKMin;
     o.shrunk = family_rows(g, run.params, k, q.toward, q.placement_seed);
-    o.note = "shrunk to k " + std::to_string(k) + " (this placement disagrees at k = " + k_list(failing) + ")";
+    o.note = "shrunk to k " + std::to_string(k) + " (this placement disagrees at k = " + k_ranges(failing) + ")";
     return;
   }
   // Keeping the exact degeneracy categories stops the shrinking from sliding into another,

@@ -79,20 +79,6 @@ struct RecordReader {
   }
 };
 
-/// "-1, 23..60" from a sorted set of k.
-std::string k_ranges(const std::set<int>& ks) {
-  std::string out;
-  for (auto it = ks.begin(); it != ks.end();) {
-    const int first = *it;
-    int last = first;
-    while (++it != ks.end() && *it == last + 1) ++last;
-    if (!out.empty()) out += ", ";
-    out += std::to_string(first);
-    if (last > first) out += (last == first + 1 ? ", " : "..") + std::to_string(last);
-  }
-  return out;
-}
-
 std::string number(double x) {
   char text[40];
   std::snprintf(text, sizeof text, "%.17g", x);
@@ -235,6 +221,19 @@ void write_disagreements(const ReportContext& c, const FuzzTally& t) {
 }
 
 }  // namespace
+
+std::string k_ranges(const std::set<int>& ks) {
+  std::string out;
+  for (auto it = ks.begin(); it != ks.end();) {
+    const int first = *it;
+    int last = first;
+    while (++it != ks.end() && *it == last + 1) ++last;
+    if (!out.empty()) out += ", ";
+    out += std::to_string(first);
+    if (last > first) out += (last == first + 1 ? ", " : "..") + std::to_string(last);
+  }
+  return out;
+}
 
 void Row::add(const Row& o) {
   queries += o.queries;

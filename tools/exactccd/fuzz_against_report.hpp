@@ -48,6 +48,9 @@ struct FuzzTally {
   std::vector<Disagreement> disagreements;
 };
 
+/// "-1, 23..60": a sorted set of k as ranges.
+std::string k_ranges(const std::set<int>& ks);
+
 /// The tally as partial records (group rows, then the times of impact and the disagreements).
 void add_records(const FuzzTally& t, Partial& p);
 
