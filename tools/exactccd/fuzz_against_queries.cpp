@@ -41,13 +41,16 @@ struct Outcome {
   /// The plug-in's time is after the exact one: a step to it passes through a contact (decided
   /// exactly: t* is in the tight [lo, hi], so T <= t* iff T <= lo).
   bool unsafe() const { return their_toi && exact_toi && !(*their_toi <= exact_toi->lo); }
-  /// The plug-in's time T is more than `factor` times early: factor T < lo <= t*, in exact
-  /// rational arithmetic (with a power-of-two factor, factor T is a double, and then also every
-  /// T with factor T < t* is counted: no double lies strictly between lo and hi).
+  /// The plug-in's time T is more than `factor` times early, factor T < t*, decided in exact
+  /// rational arithmetic from the tight [lo, hi] around t*: factor T < lo, or factor T == lo
+  /// when lo < hi (then lo < t*). Exact whenever factor T is a double (a power-of-two factor):
+  /// no double lies strictly between lo and hi; otherwise factor T inside (lo, hi) is not
+  /// counted.
   bool early(double factor) const {
     if (!their_toi || !exact_toi || unsafe()) return false;
     if (std::isinf(*their_toi)) return true;  // -inf (+inf is unsafe)
-    return mpq_class(*their_toi) * mpq_class(factor) < mpq_class(exact_toi->lo);
+    const mpq_class scaled = mpq_class(*their_toi) * mpq_class(factor), lo(exact_toi->lo);
+    return scaled < lo || (scaled == lo && exact_toi->lo < exact_toi->hi);
   }
 };
 
