@@ -126,6 +126,18 @@ if(NOT rc EQUAL 2 OR NOT err MATCHES "does not export the symbol exactccd_plugin
   message(FATAL_ERROR "contact-only plug-in, --kind pe: exit ${rc}, stderr '${err}', stdout '${out}'")
 endif()
 
+# Questions the families cannot ask, and bad factors: usage errors.
+foreach(bad "--min-distance;1e302;above 2\\^1000" "--early-factor;0.5;--early-factor needs" "--min-distance;-1;--min-distance needs")
+  list(GET bad 0 option)
+  list(GET bad 1 value)
+  list(GET bad 2 message)
+  execute_process(COMMAND ${EXE} fuzz-against ${EXACT} --kind pp ${option} ${value} --queries 10 --out ${WORK}/x
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2 OR NOT err MATCHES "${message}" OR NOT out STREQUAL "")
+    message(FATAL_ERROR "${option} ${value}: exit ${rc}, stderr '${err}', stdout '${out}'")
+  endif()
+endforeach()
+
 # 4. A sharded run at d > 0, merged: byte-identical to one run, report and files (and the one
 #    run with --threads 1 identical to --threads 2).
 set(one ${WORK}/one)
