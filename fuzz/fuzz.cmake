@@ -19,6 +19,8 @@ function(exactccd_add_plugin name source)
 endfunction()
 exactccd_add_plugin(naive_plugin fuzz/plugins/naive_plugin.cpp)
 exactccd_add_plugin(naive_tolerance_plugin fuzz/plugins/naive_tolerance_plugin.cpp)
+exactccd_add_plugin(exact_plugin fuzz/plugins/exact_plugin.cpp)
+exactccd_add_plugin(sampled_distance_plugin fuzz/plugins/sampled_distance_plugin.cpp)
 
 if(EXACTCCD_BUILD_TESTS)
   exactccd_add_plugin(plugin_vf_only tests/cli/plugin_vf_only.cpp)
@@ -26,6 +28,14 @@ if(EXACTCCD_BUILD_TESTS)
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:exactccd_cli> -DNAIVE=$<TARGET_FILE:naive_plugin>
             -DVF_ONLY=$<TARGET_FILE:plugin_vf_only> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/fuzz-against-test
             -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli/cli_fuzz_against.cmake)
+  # The minimum separation and every kind: exactccd itself as a plug-in finds nothing, the
+  # sampled-distance plug-in's mistakes are found and replay, contact-only plug-ins are refused a
+  # question they do not answer, shards merge (tests/cli/cli_fuzz_against_separation.cmake).
+  add_test(NAME cli.fuzz_against_separation
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:exactccd_cli> -DEXACT=$<TARGET_FILE:exact_plugin>
+            -DSAMPLED=$<TARGET_FILE:sampled_distance_plugin> -DNAIVE=$<TARGET_FILE:naive_plugin>
+            -DVF_ONLY=$<TARGET_FILE:plugin_vf_only> -DWORK=${CMAKE_CURRENT_BINARY_DIR}/fuzz-against-separation-test
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/tests/cli/cli_fuzz_against_separation.cmake)
   # Sharded runs merged (tests/cli/cli_merge.cmake), and the Slurm recipe of tools/cluster/ on a
   # one-node cluster the test starts itself (tests/cli/cluster_slurm.sh; skipped without slurm-wlm
   # and munge, or when not root).
@@ -41,7 +51,7 @@ if(EXACTCCD_BUILD_TESTS)
   # The slowest CLI runs (fuzz-against with shrinking: over 3 minutes under ASan with the wide
   # families, whose plug-in loading and shrinking then do not run under the sanitizers; the
   # Slurm cluster, 35 s in Release); sharded merging likewise left to the Release pass.
-  set_tests_properties(cli.cluster_slurm cli.fuzz_against cli.merge PROPERTIES LABELS sanitizer-skip)
+  set_tests_properties(cli.cluster_slurm cli.fuzz_against cli.fuzz_against_separation cli.merge PROPERTIES LABELS sanitizer-skip)
   # The committed seed corpus holds what the generator writes now.
   add_executable(make_seed_corpus fuzz/make_seed_corpus.cpp)
   target_compile_options(make_seed_corpus PRIVATE ${EXACTCCD_WARNINGS})

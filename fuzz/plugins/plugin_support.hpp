@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "exactccd/exactccd.hpp"
+#include "kinds/primitive_kinds.hpp"
 #include "methods/methods.hpp"
 
 namespace exactccd::plugins {
@@ -16,6 +17,20 @@ template <class Query>
 Query query_from(const double q[24]) {
   std::array<Vec3, 8> r;
   for (std::size_t i = 0; i < 8; ++i) r[i] = {q[3 * i], q[3 * i + 1], q[3 * i + 2]};
+  return from_rows<Query>(r);
+}
+
+/// The query of the kind Kind (a description of lib/kinds) in the plug-in ABI's doubles: its
+/// points at t = 0 then t = 1, Kind::dimension coordinates each (plugin.h).
+template <class Kind>
+typename Kind::template Query<double> kind_query(const double* q) {
+  using Query = typename Kind::template Query<double>;
+  auto r = rows(Query{});
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    r[i].x = q[Kind::dimension * i];
+    r[i].y = q[Kind::dimension * i + 1];
+    if constexpr (Kind::dimension == 3) r[i].z = q[3 * i + 2];
+  }
   return from_rows<Query>(r);
 }
 

@@ -253,7 +253,7 @@ template <class Kind>
 struct HasContactStages<Kind, std::void_t<decltype(Kind::volume_rows)>> : std::true_type {};
 
 /// Calls f(Kind{}) for the kinds of the list with contact stages (HasContactStages), in list
-/// order: the kinds the textbook baselines and the plug-in ABI answer.
+/// order: the kinds the textbook baselines and the plug-in ABI's contact-only entry points answer.
 template <class F>
 constexpr void for_each_contact_kind(F&& f) {
   for_each_kind([&](auto kind) {

@@ -13,10 +13,6 @@
 //    to every vertex, and degenerate primitives equal to their hull's kind.
 #include <gtest/gtest.h>
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/gmpxx.h>
-#include <CGAL/squared_distance_3.h>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -37,15 +33,16 @@
 #include "exactccd/rational.hpp"
 #include "io/benchmark_csv.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "tests/exact_distance.hpp"
 #include "tests/test_support.hpp"
 
 namespace exactccd {
 namespace {
 
-using K = CGAL::Simple_cartesian<mpq_class>;
-using P3 = K::Point_3;
-using S3 = K::Segment_3;
-using T3 = K::Triangle_3;
+using testing::P3;
+using testing::sq_point_segment;
+using testing::sq_point_triangle;
+using testing::sq_segment_segment;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -153,24 +150,7 @@ std::string context(const Rows<Q>& r, const CcdParams& p, const std::string& ori
   return origin + ": " + describe<Q>(r) + "   d = " + fmt(p.min_distance) + ", tmax = " + fmt(p.tmax) + "\n";
 }
 
-// ---- the independent exact distance (CGAL) -------------------------------------------------
-
-mpq_class sq_point_segment(const P3& p, const P3& a, const P3& b) {
-  if (a == b) return CGAL::squared_distance(p, a);
-  return CGAL::squared_distance(p, S3(a, b));
-}
-
-mpq_class sq_segment_segment(const P3& a0, const P3& a1, const P3& b0, const P3& b1) {
-  if (a0 == a1) return sq_point_segment(a0, b0, b1);
-  if (b0 == b1) return sq_point_segment(b0, a0, a1);
-  return CGAL::squared_distance(S3(a0, a1), S3(b0, b1));
-}
-
-mpq_class sq_point_triangle(const P3& p, const P3& a, const P3& b, const P3& c) {
-  if (CGAL::collinear(a, b, c))  // a segment or a point: the distance to its hull
-    return std::min({sq_point_segment(p, a, b), sq_point_segment(p, b, c), sq_point_segment(p, c, a)});
-  return CGAL::squared_distance(p, T3(a, b, c));
-}
+// ---- the independent exact distance (CGAL: tests/exact_distance.hpp) -------------------------
 
 P3 position(const Row& x0, const Row& x1, const mpq_class& t) {
   auto c = [&](int k) {
