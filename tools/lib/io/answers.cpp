@@ -32,6 +32,8 @@ std::vector<TheirAnswer> read_answers(std::istream& in, const std::string& sourc
       const auto [end, error] = std::from_chars(w.data(), w.data() + w.size(), t);
       if (error != std::errc() || end != w.data() + w.size() || !std::isfinite(t))
         throw ParseError(source, n, "the time of impact '" + w + "' is not a finite number");
+      // A time of the query's interval [0, tmax], tmax <= 1 (-0 is 0).
+      if (!(t >= 0 && t <= 1)) throw ParseError(source, n, "the time of impact '" + w + "' is not in [0, 1]");
       a.toi = t;
     }
     out.push_back(a);

@@ -19,7 +19,8 @@ struct TheirAnswer {
 };
 
 /// Reads one answer per non-blank line (whitespace-separated words): "0" or "1" (with_toi
-/// false), "0" or "1 T" (with_toi) with T a finite decimal (the nearest double). Anything else
+/// false), "0" or "1 T" (with_toi) with T a decimal in [0, 1] (the nearest double: a time of the
+/// query's interval [0, tmax], tmax <= 1). Anything else
 /// is a ParseError naming source_name and the line. A UTF-8 byte order mark is skipped.
 std::vector<TheirAnswer> read_answers(std::istream& in, const std::string& source_name, bool with_toi);
 
