@@ -242,6 +242,14 @@ TEST(TruthJson, ReadsArraysOfBooleansStrictly) {
   EXPECT_EQ(truth_error("[trueish]"), "t.json:1: expected ',' or ']' after value 1, found 'ish'");
 }
 
+// Found by the reader fuzz target (fuzz/readers/fuzz_read_truth_json.cpp): an error at the end
+// of an input ending in a line break named the line after the last ("[true \n": line 2).
+TEST(TruthJson, AnErrorAtTheEndNamesTheLastLine) {
+  EXPECT_EQ(truth_error("[true \n"), "t.json:1: expected ',' or ']' after value 1, found the end of the input");
+  EXPECT_EQ(truth_error("[true,\nfalse\n\n"), "t.json:3: expected ',' or ']' after value 2, found the end of the input");
+  EXPECT_EQ(truth_error("\n"), "t.json:1: expected a JSON array of booleans ('['), found the end of the input");
+}
+
 std::string answers_error(const std::string& text, bool with_toi) {
   std::istringstream in(text);
   try {
