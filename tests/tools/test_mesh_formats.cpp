@@ -371,5 +371,20 @@ TEST(MeshFormats, OffStartingWithACommentIsOff) {
 // An empty OFF file's error named line 0 (lines are 1-based).
 TEST(MeshFormats, EmptyOffNamesLineOne) { EXPECT_EQ(off_error(""), "m.off:1: empty OFF file"); }
 
+// Found by reading: the repeated-vertex check compared every pair of a polygon's vertices.
+TEST(MeshFormats, LargePolygonsAreCheckedForRepeatedVertices) {
+  constexpr int kVertices = 50000;
+  std::string off = "OFF\n" + std::to_string(kVertices) + " 1\n", face = std::to_string(kVertices);
+  for (int i = 0; i < kVertices; ++i) {
+    off += std::to_string(i) + " " + std::to_string(i % 5) + " 0\n";
+    face += " " + std::to_string(i);
+  }
+  std::istringstream in(off + face + "\n");
+  EXPECT_EQ(read_off(in, "m.off").triangles.size(), static_cast<std::size_t>(kVertices - 2));
+  std::string repeated = face;
+  repeated.replace(repeated.rfind(' '), std::string::npos, " 12");  // the last index becomes 12
+  EXPECT_EQ(off_error(off + repeated + "\n"), "m.off:" + std::to_string(kVertices + 3) + ": degenerate face: vertex 12 appears twice");
+}
+
 }  // namespace
 }  // namespace exactccd::io

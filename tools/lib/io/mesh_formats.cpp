@@ -14,6 +14,8 @@
 #include <tuple>
 #include <vector>
 
+#include "io/polygon.hpp"
+
 namespace exactccd::io {
 namespace {
 
@@ -83,13 +85,12 @@ bool parse_integer(const std::string& token, long long& value) {
 template <class Fail>
 void add_polygon(ObjMesh& mesh, const std::vector<long long>& poly, std::size_t vertex_count, Fail fail) {
   if (poly.size() < 3) fail("face with " + std::to_string(poly.size()) + " vertices (expected at least 3)");
-  for (std::size_t i = 0; i < poly.size(); ++i) {
+  for (std::size_t i = 0; i < poly.size(); ++i)
     if (poly[i] < 0 || static_cast<unsigned long long>(poly[i]) >= vertex_count)
       fail("face vertex index " + std::to_string(poly[i]) + " out of range (the file has " +
            std::to_string(vertex_count) + " vertices, indices from 0)");
-    for (std::size_t j = 0; j < i; ++j)
-      if (poly[i] == poly[j]) fail("degenerate face: vertex " + std::to_string(poly[i]) + " appears twice");
-  }
+  if (const auto repeated = first_repeated_vertex(poly))
+    fail("degenerate face: vertex " + std::to_string(*repeated) + " appears twice");
   for (std::size_t i = 2; i < poly.size(); ++i)
     mesh.triangles.push_back({static_cast<int>(poly[0]), static_cast<int>(poly[i - 1]), static_cast<int>(poly[i])});
 }

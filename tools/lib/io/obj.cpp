@@ -9,6 +9,8 @@
 #include <sstream>
 #include <system_error>
 
+#include "io/polygon.hpp"
+
 namespace exactccd::io {
 namespace {
 
@@ -205,11 +207,9 @@ ObjMesh read_obj(std::istream& in, const std::string& source_name) {
       Face f{{}, line_number};
       for (std::size_t i = 1; i < t.size(); ++i)
         f.vertices.push_back(references.resolve(parse_reference(t[i], source_name, line_number), "face", line_number));
-      for (std::size_t i = 0; i < f.vertices.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-          if (f.vertices[i] == f.vertices[j])
-            throw ParseError(source_name, line_number,
-                             "degenerate face: vertex " + std::to_string(f.vertices[i] + 1) + " appears twice");
+      if (const auto repeated = first_repeated_vertex(f.vertices))
+        throw ParseError(source_name, line_number,
+                         "degenerate face: vertex " + std::to_string(*repeated + 1) + " appears twice");
       faces.push_back(std::move(f));
     }
   }
