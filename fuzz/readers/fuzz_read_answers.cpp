@@ -30,27 +30,19 @@ void check_answers(const std::vector<io::TheirAnswer>& answers, bool with_toi, s
   for (const io::TheirAnswer& a : answers)
     require(a.toi.has_value() == (with_toi && a.collides) && (!a.toi || (*a.toi >= 0 && *a.toi <= 1)),
             "a time of impact where there must be none, or a missing one or one outside [0, 1]", input);
-  std::stringstream written;
+  std::ostringstream written;
   io::write_answers(written, answers);
-  try {
-    require(same_answers(answers, io::read_answers(written, "written.txt", with_toi)),
-            "written back, the answers read differently:\n" + written.str(), input);
-  } catch (const io::InputError& e) {
-    fail(std::string("written back, the answers are refused: ") + e.what(), input);
-  }
+  const auto read = [&](std::istream& in) { return io::read_answers(in, "written.txt", with_toi); };
+  require(same_answers(answers, read_back(read, written.str(), input)),
+          "written back, the answers read differently:\n" + written.str(), input);
 }
 
 void check_mode(std::string_view input, bool with_toi) {
-  std::vector<io::TheirAnswer> answers;
-  const ReaderOutcome outcome = run_reader(
-      [&] {
-        std::istringstream in{std::string(input)};
-        answers = io::read_answers(in, "input.txt", with_toi);
-      },
-      "input.txt", Location::line, input);
-  if (!outcome.accepted) return;
-  check_answers(answers, with_toi, input);
-  check_rejects_trailing_garbage([&](std::istream& in) { io::read_answers(in, "input.txt", with_toi); }, input);
+  const auto read = [with_toi](std::istream& in, const std::string& source) {
+    return io::read_answers(in, source, with_toi);
+  };
+  fuzz_stream_reader(read, "input.txt", input,
+                     [&](const std::vector<io::TheirAnswer>& answers) { check_answers(answers, with_toi, input); });
 }
 
 }  // namespace

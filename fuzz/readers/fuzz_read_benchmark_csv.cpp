@@ -44,27 +44,18 @@ void check_queries(const io::BenchmarkQueries& q, std::string_view input) {
       require(q.lines[i][k] > last && q.lines[i][k] <= line_count(input), "row lines out of order or range", input);
       last = q.lines[i][k];
     }
-  std::stringstream written;
+  std::ostringstream written;
   io::write_benchmark_csv(written, q);
-  try {
-    require(same_queries(q, io::read_benchmark_csv(written, "written.csv", q.layout)),
-            "written back, the queries read differently:\n" + written.str(), input);
-  } catch (const io::InputError& e) {
-    fail(std::string("written back, the queries are refused: ") + e.what(), input);
-  }
+  const auto read = [&](std::istream& in) { return io::read_benchmark_csv(in, "written.csv", q.layout); };
+  require(same_queries(q, read_back(read, written.str(), input)),
+          "written back, the queries read differently:\n" + written.str(), input);
 }
 
 void check_layout(std::string_view input, io::QueryLayout layout) {
-  io::BenchmarkQueries q;
-  const ReaderOutcome outcome = run_reader(
-      [&] {
-        std::istringstream in{std::string(input)};
-        q = io::read_benchmark_csv(in, "input.csv", layout);
-      },
-      "input.csv", Location::line, input);
-  if (!outcome.accepted) return;
-  check_queries(q, input);
-  check_rejects_trailing_garbage([&](std::istream& in) { io::read_benchmark_csv(in, "input.csv", layout); }, input);
+  const auto read = [layout](std::istream& in, const std::string& source) {
+    return io::read_benchmark_csv(in, source, layout);
+  };
+  fuzz_stream_reader(read, "input.csv", input, [&](const io::BenchmarkQueries& q) { check_queries(q, input); });
 }
 
 }  // namespace

@@ -62,7 +62,11 @@ const MeshFormatUnderTest& obj_format() {
         io::write_obj(out, m.vertices, m.triangles, "round trip");
         return true;
       }},
-      false};
+      false,
+      [](const io::TriangleMesh& mesh, std::string_view input) {
+        check_counts(mesh, input);
+        check_references(input);
+      }};
   return format;
 }
 
@@ -70,12 +74,6 @@ const MeshFormatUnderTest& obj_format() {
 }  // namespace exactccd::fuzzing
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace exactccd::fuzzing;
-  const std::string_view input = as_text(data, size);
-  bool accepted = false;
-  const exactccd::io::TriangleMesh mesh = check_mesh_reader(obj_format(), input, accepted);
-  if (!accepted) return 0;
-  check_counts(mesh, input);
-  check_references(input);
+  exactccd::fuzzing::fuzz_mesh_reader(exactccd::fuzzing::obj_format(), exactccd::fuzzing::as_text(data, size));
   return 0;
 }

@@ -31,7 +31,8 @@ const MeshFormatUnderTest& off_format() {
                                             write_off(out, m);
                                             return true;
                                           }},
-                                          true};
+                                          true,
+                                          check_counts};
   return format;
 }
 
@@ -39,10 +40,6 @@ const MeshFormatUnderTest& off_format() {
 }  // namespace exactccd::fuzzing
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace exactccd::fuzzing;
-  const std::string_view input = as_text(data, size);
-  bool accepted = false;
-  const exactccd::io::TriangleMesh mesh = check_mesh_reader(off_format(), input, accepted);
-  if (accepted) check_counts(mesh, input);
+  exactccd::fuzzing::fuzz_mesh_reader(exactccd::fuzzing::off_format(), exactccd::fuzzing::as_text(data, size));
   return 0;
 }

@@ -38,7 +38,8 @@ const MeshFormatUnderTest& ply_format() {
                                           Location::line_or_byte,
                                           {ply_writer(PlyEncoding::ascii), ply_writer(PlyEncoding::binary_little_endian),
                                            ply_writer(PlyEncoding::binary_big_endian)},
-                                          true};
+                                          true,
+                                          check_counts};
   return format;
 }
 
@@ -46,10 +47,6 @@ const MeshFormatUnderTest& ply_format() {
 }  // namespace exactccd::fuzzing
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace exactccd::fuzzing;
-  const std::string_view input = as_text(data, size);
-  bool accepted = false;
-  const exactccd::io::TriangleMesh mesh = check_mesh_reader(ply_format(), input, accepted);
-  if (accepted) check_counts(mesh, input);
+  exactccd::fuzzing::fuzz_mesh_reader(exactccd::fuzzing::ply_format(), exactccd::fuzzing::as_text(data, size));
   return 0;
 }

@@ -37,7 +37,8 @@ const MeshFormatUnderTest& stl_format() {
                                              return true;
                                            },
                                            write_stl_binary},
-                                          true};
+                                          true,
+                                          check_counts};
   return format;
 }
 
@@ -45,10 +46,6 @@ const MeshFormatUnderTest& stl_format() {
 }  // namespace exactccd::fuzzing
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace exactccd::fuzzing;
-  const std::string_view input = as_text(data, size);
-  bool accepted = false;
-  const exactccd::io::TriangleMesh mesh = check_mesh_reader(stl_format(), input, accepted);
-  if (accepted) check_counts(mesh, input);
+  exactccd::fuzzing::fuzz_mesh_reader(exactccd::fuzzing::stl_format(), exactccd::fuzzing::as_text(data, size));
   return 0;
 }

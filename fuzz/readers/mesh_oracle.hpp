@@ -32,11 +32,13 @@ struct MeshFormatUnderTest {
   /// faces): false for OBJ, whose format detection refuses control characters that read_obj
   /// takes in comments and names.
   bool detection_complete = true;
+  /// The format's own checks of an accepted input against the mesh read (the target's counts).
+  std::function<void(const io::TriangleMesh&, std::string_view)> check_accepted;
 };
 
-/// Reads `input` with the format's reader under run_reader and checks every property above;
-/// returns the mesh when the reader accepted the input (`accepted` true).
-io::TriangleMesh check_mesh_reader(const MeshFormatUnderTest& format, std::string_view input, bool& accepted);
+/// Reads the input with the format's reader under run_reader and checks every property above
+/// and the format's check_accepted: the whole of a mesh target's LLVMFuzzerTestOneInput.
+void fuzz_mesh_reader(const MeshFormatUnderTest& format, std::string_view input);
 
 /// fail() unless every coordinate is finite and every triangle has three distinct vertices of
 /// the mesh.

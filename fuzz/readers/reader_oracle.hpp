@@ -9,9 +9,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <iosfwd>
+#include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "io/input_file.hpp"
 
@@ -64,6 +65,23 @@ constexpr std::size_t kBytesPerInputByte = 64;
 /// ... plus this many for fixed costs (stream buffers, locale facets, error messages).
 constexpr std::size_t kFixedBytes = 256 * 1024;
 
+/// The whole check of a text reader on an input: `read(stream, source)` under run_reader (errors
+/// with a line); when it accepts, `check(what it returned)` (the target's own properties) and
+/// check_rejects_trailing_garbage.
+template <class Read, class Check>
+void fuzz_stream_reader(const Read& read, const std::string& source, std::string_view input, const Check& check) {
+  decltype(read(std::declval<std::istream&>(), source)) result{};
+  const ReaderOutcome outcome = run_reader(
+      [&] {
+        std::istringstream in{std::string(input)};
+        result = read(in, source);
+      },
+      source, Location::line, input);
+  if (!outcome.accepted) return;
+  check(result);
+  check_rejects_trailing_garbage([&](std::istream& in) { read(in, source); }, input);
+}
+
 /// A file in the temporary directory for readers that take a path (io::read_mesh,
 /// cli::read_partial): one per process and name, rewritten for every input, removed at exit.
 class ScratchFile {
@@ -85,6 +103,18 @@ class ScratchFile {
 /// The input as a string (libFuzzer's bytes).
 inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
+}
+
+/// What `read` (a reader taking an std::istream&) makes of `written`, text the target wrote
+/// itself from what the reader returned (a round trip): fail() when the reader refuses it.
+template <class Read>
+auto read_back(const Read& read, const std::string& written, std::string_view input) {
+  std::istringstream in(written);
+  try {
+    return read(static_cast<std::istream&>(in));
+  } catch (const io::InputError& e) {
+    fail(std::string("written back, the reader refuses it: ") + e.what() + "\nwritten:\n" + written, input);
+  }
 }
 
 /// Checks that `read` throws io::InputError on the input with a line of garbage appended
