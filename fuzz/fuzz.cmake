@@ -87,3 +87,47 @@ if(EXACTCCD_BUILD_FUZZERS)
       ENVIRONMENT "EXACTCCD_FUZZ_MAX_SPREAD=2200;ASAN_OPTIONS=detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
   endforeach()
 endif()
+
+# The reader fuzz targets (docs/fuzzing.md, section 5): every reader a user feeds a file to, on
+# arbitrary bytes, with the checks of fuzz/readers/reader_oracle.hpp (errors name the file and
+# line or byte offset, memory within a multiple of the input's size, round trips, counts, no
+# trailing garbage). Seeds: the committed fuzz/corpus/read_<target>/ and those cut from the
+# bundled data at build time (fuzz/readers/make_reader_seeds.cpp, into the build tree).
+if(EXACTCCD_BUILD_FUZZERS)
+  set(EXACTCCD_READER_FUZZ_SMOKE_SECONDS 4 CACHE STRING "Seconds per reader fuzz target in the CTest smoke runs")
+  add_library(exactccd_reader_fuzz_support STATIC fuzz/readers/reader_oracle.cpp fuzz/readers/mesh_oracle.cpp
+                                                  fuzz/readers/mesh_writers.cpp)
+  target_compile_options(exactccd_reader_fuzz_support PRIVATE ${EXACTCCD_WARNINGS})
+  target_include_directories(exactccd_reader_fuzz_support PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+  target_link_libraries(exactccd_reader_fuzz_support PUBLIC exactccd_tools)
+  add_executable(make_reader_seeds fuzz/readers/make_reader_seeds.cpp)
+  target_compile_options(make_reader_seeds PRIVATE ${EXACTCCD_WARNINGS})
+  target_link_libraries(make_reader_seeds PRIVATE exactccd_reader_fuzz_support)
+  set(reader_seeds ${CMAKE_CURRENT_BINARY_DIR}/fuzz-reader-seeds)
+  file(GLOB_RECURSE reader_seed_sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/data/*.csv
+       ${CMAKE_CURRENT_SOURCE_DIR}/data/*.obj ${CMAKE_CURRENT_SOURCE_DIR}/tests/data/*)
+  add_custom_command(OUTPUT ${reader_seeds}/stamp
+    COMMAND make_reader_seeds ${CMAKE_CURRENT_SOURCE_DIR} ${reader_seeds}
+    COMMAND ${CMAKE_COMMAND} -E touch ${reader_seeds}/stamp
+    DEPENDS make_reader_seeds ${reader_seed_sources}
+    COMMENT "Cutting the reader fuzz seeds from the bundled data")
+  add_custom_target(reader_fuzz_seeds ALL DEPENDS ${reader_seeds}/stamp)
+  foreach(reader obj ply off stl benchmark_csv rigid_csv truth_json answers partial)
+    set(target fuzz_read_${reader})
+    add_executable(${target} fuzz/readers/${target}.cpp)
+    target_compile_options(${target} PRIVATE ${EXACTCCD_WARNINGS})
+    target_link_options(${target} PRIVATE -fsanitize=fuzzer)
+    target_link_libraries(${target} PRIVATE exactccd_reader_fuzz_support)
+    add_dependencies(${target} reader_fuzz_seeds)
+    set(scratch ${CMAKE_CURRENT_BINARY_DIR}/fuzz-smoke/read_${reader})
+    set(seed_dirs "'${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/read_${reader}'")
+    if(NOT reader STREQUAL "partial")  # its seeds are the committed ones only
+      string(APPEND seed_dirs " '${reader_seeds}/read_${reader}'")
+    endif()
+    add_test(NAME fuzz.read_${reader}.smoke
+      COMMAND sh -c "rm -rf '${scratch}' && mkdir -p '${scratch}' && exec '$<TARGET_FILE:${target}>' -max_total_time=${EXACTCCD_READER_FUZZ_SMOKE_SECONDS} -seed=1 -max_len=8192 -timeout=10 -malloc_limit_mb=512 -rss_limit_mb=2048 -print_final_stats=1 '${scratch}' ${seed_dirs}")
+    set_tests_properties(fuzz.read_${reader}.smoke PROPERTIES TIMEOUT 120
+      ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
+  endforeach()
+  target_link_libraries(fuzz_read_partial PRIVATE exactccd_cli_common)
+endif()

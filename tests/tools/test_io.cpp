@@ -1,6 +1,8 @@
-// Tests of the benchmark CSV reader and writer (tools/lib/io/benchmark_csv).
+// Tests of the benchmark CSV reader and writer (tools/lib/io/benchmark_csv), and of the truth
+// JSON (io/truth_json) and answers (io/answers) readers.
 #include "io/benchmark_csv.hpp"
 #include "io/truth_json.hpp"
+#include "io/answers.hpp"
 
 #include <gtest/gtest.h>
 
@@ -238,6 +240,52 @@ TEST(TruthJson, ReadsArraysOfBooleansStrictly) {
   EXPECT_EQ(truth_error("[true]\n[false]"), "t.json:2: data after the array: '['");
   EXPECT_EQ(truth_error("[[true]]"), "t.json:1: value 1 is not true or false: found '['");
   EXPECT_EQ(truth_error("[trueish]"), "t.json:1: expected ',' or ']' after value 1, found 'ish'");
+}
+
+// Found by the reader fuzz target (fuzz/readers/fuzz_read_truth_json.cpp): an error at the end
+// of an input ending in a line break named the line after the last ("[true \n": line 2).
+TEST(TruthJson, AnErrorAtTheEndNamesTheLastLine) {
+  EXPECT_EQ(truth_error("[true \n"), "t.json:1: expected ',' or ']' after value 1, found the end of the input");
+  EXPECT_EQ(truth_error("[true,\nfalse\n\n"), "t.json:3: expected ',' or ']' after value 2, found the end of the input");
+  EXPECT_EQ(truth_error("\n"), "t.json:1: expected a JSON array of booleans ('['), found the end of the input");
+}
+
+std::string answers_error(const std::string& text, bool with_toi) {
+  std::istringstream in(text);
+  try {
+    read_answers(in, "theirs.txt", with_toi);
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// `compare`'s answers (moved from tools/exactccd/compare.cpp into io/answers for the fuzz
+// target). Found by it: a time of impact outside [0, 1] was accepted (and a negative one
+// counted as a safe TOI), though the query's interval is [0, tmax], tmax <= 1.
+TEST(TheirAnswers, ReadsAnswersAndTimesOfImpactInTheQueryInterval) {
+  std::istringstream in("\xEF\xBB\xBF" "1 0.5\n\n0\n 1   1e-300 \r\n1 1\n1 -0\n");
+  const std::vector<TheirAnswer> a = read_answers(in, "theirs.txt", true);
+  ASSERT_EQ(a.size(), 5u);
+  EXPECT_EQ(*a[0].toi, 0.5);
+  EXPECT_FALSE(a[1].collides);
+  EXPECT_FALSE(a[1].toi);
+  EXPECT_EQ(*a[2].toi, 1e-300);
+  EXPECT_EQ(*a[3].toi, 1.0);
+  EXPECT_EQ(*a[4].toi, 0.0);
+  EXPECT_EQ(answers_error("0\n1 1.37\n", true), "theirs.txt:2: the time of impact '1.37' is not in [0, 1]");
+  EXPECT_EQ(answers_error("1 -0.25\n", true), "theirs.txt:1: the time of impact '-0.25' is not in [0, 1]");
+  EXPECT_EQ(answers_error("1 nan\n", true), "theirs.txt:1: the time of impact 'nan' is not a finite number");
+  EXPECT_EQ(answers_error("1 0.5\n", false), "theirs.txt:1: expected 0 or 1, found 2 fields");
+  EXPECT_EQ(answers_error("1\n", true), "theirs.txt:1: expected 0, or 1 and a time of impact, found 1 fields");
+  std::stringstream written;
+  write_answers(written, a);
+  const std::vector<TheirAnswer> back = read_answers(written, "written.txt", true);
+  ASSERT_EQ(back.size(), a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(back[i].collides, a[i].collides);
+    EXPECT_EQ(back[i].toi, a[i].toi);
+  }
 }
 
 TEST(WriteBenchmarkCsv, RoundTrips) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -289,6 +290,100 @@ TEST(MeshFormats, StlMergesCornersAndReportsErrors) {
   std::string bad = ascii;
   bad.replace(bad.find("vertex 1 0 0"), 12, "vertex 1 x 0");
   EXPECT_EQ(stl_error(bad), "m.stl:5: coordinate 'x' is not a number");
+}
+
+// --- Found by the reader fuzz targets (fuzz/readers/, docs/fuzzing.md section 5) -----------
+
+/// `bytes` written to a file named `name` in the test's temporary directory; its path.
+std::string temp_file(const std::string& name, const std::string& bytes) {
+  const std::string path = ::testing::TempDir() + "exactccd-mesh-formats-" + name;
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+/// The error of read_mesh on `path` ("" when it reads).
+std::string read_mesh_error(const std::string& path) {
+  try {
+    read_mesh(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// A binary STL of two triangles with the given 80-byte header (padded with spaces).
+std::string binary_stl(const std::string& header) {
+  std::string bin = (header + std::string(80, ' ')).substr(0, 80);
+  put<std::uint32_t>(bin, 2, false);
+  const float facets[2][3][3] = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  for (const auto& f : facets) {
+    for (int k = 0; k < 3; ++k) put<float>(bin, 0, false);
+    for (const auto& p : f)
+      for (float c : p) put<float>(bin, c, false);
+    put<std::uint16_t>(bin, 0, false);
+  }
+  return bin;
+}
+
+// A binary STL's 80-byte header is free: one starting with "ply" was refused as "the content
+// is PLY, but the extension says STL", one starting with the bytes of a UTF-8 byte order mark
+// lost them to the mark's skipping and was refused as "the content is not STL (binary data)".
+TEST(MeshFormats, ReadMeshTakesBinaryStlWhateverItsHeaderStartsWith) {
+  for (const std::string header : {"ply\nsome exporter", "\xEF\xBB\xBFheader", "OFF", "solid but binary"}) {
+    SCOPED_TRACE(header);
+    const std::string path = temp_file("header.stl", binary_stl(header));
+    EXPECT_EQ(detect_mesh_format(path), MeshFormat::stl);
+    const TriangleMesh m = read_mesh(path);
+    EXPECT_EQ(m.vertices.size(), 4u);
+    EXPECT_EQ(m.triangles, (std::vector<Tri>{{0, 1, 2}, {1, 2, 3}}));
+  }
+  // A PLY file named .stl is still reported as what it is.
+  EXPECT_EQ(read_mesh_error(temp_file("really.stl", "ply\nformat ascii 1.0\nend_header\n")),
+            ::testing::TempDir() + "exactccd-mesh-formats-really.stl: the content is PLY, but the extension says STL");
+}
+
+// A byte order mark before a binary PLY's header: read_mesh skipped it before the reader, whose
+// byte offsets then counted from after the mark, 3 short of the file's.
+TEST(MeshFormats, ByteOffsetsCountAByteOrderMark) {
+  std::string nan = binary_quad(false);
+  const std::size_t body = nan.find("end_header\n") + 11;
+  const float q = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(&nan[body], &q, 4);
+  const std::string path = temp_file("bom.ply", "\xEF\xBB\xBF" + nan);
+  EXPECT_EQ(read_mesh_error(path), path + ": byte offset " + std::to_string(body + 3) +
+                                       " (vertex 0 of 4, property x): coordinate is not finite (NaN or infinity)");
+  // The readers themselves skip the mark where the content is text, as read_mesh did.
+  EXPECT_EQ(ply_error("\xEF\xBB\xBF" + binary_quad(true)), "");
+  EXPECT_EQ(off_error("\xEF\xBB\xBFOFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "");
+  EXPECT_EQ(stl_error("\xEF\xBB\xBFsolid\nendsolid\n"), "");
+}
+
+// read_off reads comments and blank lines before the keyword, format detection did not: a
+// valid OFF file starting with a comment was "not OFF (text without the OFF header)".
+TEST(MeshFormats, OffStartingWithACommentIsOff) {
+  const std::string path = temp_file("comment.off", "# made by hand\n\n  OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(detect_mesh_format(path), MeshFormat::off);
+  EXPECT_EQ(read_mesh(path).triangles, (std::vector<Tri>{{0, 1, 2}}));
+  EXPECT_EQ(read_mesh_error(temp_file("comment.obj", "# c\nOFF\n3 1\n")),
+            ::testing::TempDir() + "exactccd-mesh-formats-comment.obj: the content is OFF, but the extension says OBJ");
+}
+
+// An empty OFF file's error named line 0 (lines are 1-based).
+TEST(MeshFormats, EmptyOffNamesLineOne) { EXPECT_EQ(off_error(""), "m.off:1: empty OFF file"); }
+
+// Found by reading: the repeated-vertex check compared every pair of a polygon's vertices.
+TEST(MeshFormats, LargePolygonsAreCheckedForRepeatedVertices) {
+  constexpr int kVertices = 50000;
+  std::string off = "OFF\n" + std::to_string(kVertices) + " 1\n", face = std::to_string(kVertices);
+  for (int i = 0; i < kVertices; ++i) {
+    off += std::to_string(i) + " " + std::to_string(i % 5) + " 0\n";
+    face += " " + std::to_string(i);
+  }
+  std::istringstream in(off + face + "\n");
+  EXPECT_EQ(read_off(in, "m.off").triangles.size(), static_cast<std::size_t>(kVertices - 2));
+  std::string repeated = face;
+  repeated.replace(repeated.rfind(' '), std::string::npos, " 12");  // the last index becomes 12
+  EXPECT_EQ(off_error(off + repeated + "\n"), "m.off:" + std::to_string(kVertices + 3) + ": degenerate face: vertex 12 appears twice");
 }
 
 }  // namespace

@@ -1,15 +1,13 @@
 // exactccd compare: the oracle for another CCD code's answers on a benchmark file.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <iostream>
 #include <vector>
 
 #include "cli_common.hpp"
 #include "degeneracy/degeneracy.hpp"
-#include "io/input_file.hpp"
+#include "io/answers.hpp"
 #include "partial.hpp"
 #include "subcommands.hpp"
 
@@ -56,43 +54,7 @@ const CommandSpec& command() {
   return spec;
 }
 
-/// One answer of the other code: collides, and its time of impact when given.
-struct TheirAnswer {
-  bool collides = false;
-  std::optional<double> toi;
-};
-
-/// Reads one answer per non-blank line: "0" or "1" (with_toi false), "0" or "1 T" (with_toi):
-/// anything else is a ParseError naming the line.
-std::vector<TheirAnswer> read_answers(const std::string& path, bool with_toi) {
-  io::InputFile file(path);
-  std::vector<TheirAnswer> out;
-  std::string line;
-  for (std::size_t n = 1; std::getline(file.stream(), line); ++n) {
-    std::istringstream fields(line);
-    std::vector<std::string> words;
-    for (std::string w; fields >> w;) words.push_back(w);
-    if (words.empty()) continue;
-    const std::string expected = with_toi ? "expected 0, or 1 and a time of impact" : "expected 0 or 1";
-    if (words[0] != "0" && words[0] != "1")
-      throw io::ParseError(path, n, expected + ", found '" + words[0] + "'");
-    TheirAnswer a{words[0] == "1", std::nullopt};
-    const std::size_t fields_wanted = with_toi && a.collides ? 2 : 1;
-    if (words.size() != fields_wanted)
-      throw io::ParseError(path, n, expected + ", found " + std::to_string(words.size()) + " fields");
-    if (fields_wanted == 2) {
-      const std::string& w = words[1];
-      double t = 0;
-      const auto [end, error] = std::from_chars(w.data(), w.data() + w.size(), t);
-      if (error != std::errc() || end != w.data() + w.size() || !std::isfinite(t))
-        throw io::ParseError(path, n, "the time of impact '" + w + "' is not a finite number");
-      a.toi = t;
-    }
-    out.push_back(a);
-  }
-  file.check_read();
-  return out;
-}
+using io::TheirAnswer;
 
 /// "min q25 median q75 max" of the values (nearest-rank quantiles), or "-" for none.
 std::string quantiles(std::vector<double> v) {
@@ -217,7 +179,7 @@ int run_compare(int argc, char** argv) {
   const std::string file = options.positionals()[0];
   const Dataset d = load_dataset(file, kind, TruthSource{"", false});  // no truth needed
   const CcdParams params = separation_params(options);
-  const std::vector<TheirAnswer> theirs = read_answers(answers_path, with_toi);
+  const std::vector<TheirAnswer> theirs = io::read_answers_file(answers_path, with_toi);
   if (theirs.size() != d.queries.size())
     throw UsageError("compare: " + answers_path + " has " + std::to_string(theirs.size()) + " answers but " +
                      file + " has " + std::to_string(d.queries.size()) + " queries");

@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <map>
 #include <sstream>
 
 #include "cli_common.hpp"
@@ -95,7 +97,7 @@ Partial read_partial(const std::string& path) {
   const auto next = [&](const char* what) {
     if (!std::getline(file.stream(), line)) {
       file.check_read();
-      throw io::ParseError(path, n + 1, std::string("unexpected end of file, expected ") + what +
+      throw io::ParseError(path, std::max<std::size_t>(n, 1), std::string("unexpected end of file, expected ") + what +
                                             " (a truncated partial file?)");
     }
     ++n;
@@ -118,15 +120,18 @@ Partial read_partial(const std::string& path) {
   if (w.size() != 3 || w[0] != "shard") throw io::ParseError(path, n, "expected 'shard I N'");
   p.shard_index = parse_count(w[1], path, n);
   p.shard_count = parse_count(w[2], path, n);
-  if (p.shard_count == 0 || p.shard_index >= p.shard_count)
-    throw io::ParseError(path, n, "shard " + w[1] + " of " + w[2] + ": expected 0 <= I < N");
+  if (p.shard_count == 0 || p.shard_index >= p.shard_count || p.shard_count > static_cast<std::size_t>(kMaxShards))
+    throw io::ParseError(path, n, "shard " + w[1] + " of " + w[2] + ": expected 0 <= I < N <= " + std::to_string(kMaxShards));
   next("'range BEGIN END TOTAL'");
   w = split_words(line);
   if (w.size() != 4 || w[0] != "range") throw io::ParseError(path, n, "expected 'range BEGIN END TOTAL'");
   p.begin = parse_count(w[1], path, n);
   p.end = parse_count(w[2], path, n);
   p.total = parse_count(w[3], path, n);
-  if (p.begin > p.end || p.end > p.total) throw io::ParseError(path, n, "range: expected BEGIN <= END <= TOTAL");
+  // TOTAL bounded so that merge_partials' TOTAL * N (the shards' ranges) cannot wrap around.
+  if (p.begin > p.end || p.end > p.total || p.total > std::numeric_limits<std::size_t>::max() / kMaxShards)
+    throw io::ParseError(path, n, "range: expected BEGIN <= END <= TOTAL <= " +
+                                      std::to_string(std::numeric_limits<std::size_t>::max() / kMaxShards));
   for (;;) {
     next("a record or 'end COUNT'");
     if (first_word(line) == "end") break;
@@ -149,8 +154,8 @@ Partial merge_partials(const std::vector<std::string>& paths) {
   std::vector<Partial> parts;
   for (const std::string& path : paths) parts.push_back(read_partial(path));
   const Partial& first = parts.front();
-  std::vector<const std::string*> by_shard(first.shard_count, nullptr);
-  std::vector<std::size_t> order(first.shard_count);
+  // Shard index -> file: sparse, so that memory follows the files given, not the files' N.
+  std::map<std::size_t, std::size_t> by_shard;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const Partial& p = parts[i];
     const std::string& path = paths[i];
@@ -163,8 +168,8 @@ Partial merge_partials(const std::vector<std::string>& paths) {
       throw UsageError("merge: " + path + " is shard " + std::to_string(p.shard_index) + " of " +
                        std::to_string(p.shard_count) + " over " + std::to_string(p.total) + " queries, " + paths[0] +
                        " of " + std::to_string(first.shard_count) + " over " + std::to_string(first.total));
-    if (by_shard[p.shard_index])
-      throw UsageError("merge: shard " + std::to_string(p.shard_index) + " given twice (" + *by_shard[p.shard_index] +
+    if (const auto seen = by_shard.find(p.shard_index); seen != by_shard.end())
+      throw UsageError("merge: shard " + std::to_string(p.shard_index) + " given twice (" + paths[seen->second] +
                        " and " + path + ")");
     const std::size_t begin = p.total * p.shard_index / p.shard_count;
     const std::size_t end = p.total * (p.shard_index + 1) / p.shard_count;
@@ -172,14 +177,18 @@ Partial merge_partials(const std::vector<std::string>& paths) {
       throw UsageError("merge: " + path + " covers queries [" + std::to_string(p.begin) + ", " + std::to_string(p.end) +
                        "), not [" + std::to_string(begin) + ", " + std::to_string(end) + ") of shard " +
                        std::to_string(p.shard_index) + "/" + std::to_string(p.shard_count));
-    by_shard[p.shard_index] = &path;
-    order[p.shard_index] = i;
+    by_shard[p.shard_index] = i;
   }
-  std::string missing;
-  for (std::size_t s = 0; s < by_shard.size(); ++s)
-    if (!by_shard[s]) missing += (missing.empty() ? "" : ", ") + std::to_string(s);
-  if (!missing.empty())
+  if (by_shard.size() != first.shard_count) {
+    // The first ten missing shards, and how many there are in all.
+    std::string missing;
+    std::size_t listed = 0;
+    for (std::size_t s = 0; s < first.shard_count && listed < 10; ++s)
+      if (by_shard.count(s) == 0) missing += (listed++ == 0 ? "" : ", ") + std::to_string(s);
+    const std::size_t count = first.shard_count - by_shard.size();
+    if (count > listed) missing += ", ... (" + std::to_string(count) + " in all)";
     throw UsageError("merge: missing shards (of " + std::to_string(first.shard_count) + "): " + missing);
+  }
   Partial merged;
   merged.command = first.command;
   merged.settings = first.settings;
@@ -187,7 +196,7 @@ Partial merge_partials(const std::vector<std::string>& paths) {
   merged.shard_count = 1;
   merged.begin = 0;
   merged.end = merged.total = first.total;
-  for (const std::size_t i : order)
+  for (const auto& [shard, i] : by_shard)  // in shard order
     for (PartialRecord& r : parts[i].records) merged.records.push_back(std::move(r));
   return merged;
 }

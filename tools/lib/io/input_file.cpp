@@ -27,7 +27,7 @@ bool skip_byte_order_mark(std::istream& in) {
   return false;
 }
 
-InputFile::InputFile(const std::string& path) : path_(path) {
+InputFile::InputFile(const std::string& path, ByteOrderMark mark) : path_(path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
@@ -40,7 +40,7 @@ InputFile::InputFile(const std::string& path) : path_(path) {
     const int error = errno;
     throw InputError(path, std::string("cannot open: ") + (error ? std::strerror(error) : "unknown reason"));
   }
-  had_bom_ = skip_byte_order_mark(in_);
+  if (mark == ByteOrderMark::skip) had_bom_ = skip_byte_order_mark(in_);
 }
 
 void InputFile::check_read() const {

@@ -31,17 +31,25 @@ class InputError : public std::runtime_error {
 /// one; returns whether it did. Anything else is left unread.
 bool skip_byte_order_mark(std::istream& in);
 
-/// A file opened for reading, positioned after its UTF-8 byte order mark if it has one.
+/// What InputFile does with a UTF-8 byte order mark at the start of the file.
+enum class ByteOrderMark {
+  skip,  ///< consume it: the stream starts after it (text readers)
+  keep,  ///< leave it: the stream starts at byte 0 (readers of binary formats, which skip it
+         ///< themselves where the content is text, so that byte offsets are the file's)
+};
+
+/// A file opened for reading, positioned after its UTF-8 byte order mark if it has one (unless
+/// asked to keep it).
 class InputFile {
  public:
   /// Opens `path`. Throws InputError "<path>: no such file", "<path>: is a directory" or
   /// "<path>: cannot open: <system reason>" (e.g. permission denied).
-  explicit InputFile(const std::string& path);
+  explicit InputFile(const std::string& path, ByteOrderMark mark = ByteOrderMark::skip);
   /// The stream to read from (after the byte order mark).
   std::istream& stream() { return in_; }
   /// The path as given.
   const std::string& path() const { return path_; }
-  /// Whether the file started with a UTF-8 byte order mark (skipped).
+  /// Whether the file started with a UTF-8 byte order mark (skipped; always false when kept).
   bool had_byte_order_mark() const { return had_bom_; }
   /// Throws InputError "<path>: read error" when the stream failed for another reason than
   /// reaching the end of the file (call after reading everything).

@@ -15,13 +15,17 @@
 namespace exactccd::io {
 namespace {
 
-/// The first bytes of a file (after a UTF-8 byte order mark) and its size when known.
+/// The first bytes of a file, as they are (`raw`) and after a UTF-8 byte order mark (`bytes`:
+/// the text the text tests look at), and the file's size when known. A binary STL's 80-byte
+/// header is free, so it may start with the bytes of a mark: its test looks at the raw bytes.
 struct FilePrefix {
+  std::string raw;
   std::string bytes;
   std::optional<std::uintmax_t> size;
 };
 
 constexpr std::size_t kPrefixBytes = 4096;
+const std::string kByteOrderMark = "\xEF\xBB\xBF";  // UTF-8
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.compare(0, prefix.size(), prefix) == 0; }
 
@@ -30,19 +34,26 @@ bool is_ply(const FilePrefix& p) {
   return starts_with(p.bytes, "ply\n") || starts_with(p.bytes, "ply\r") || p.bytes == "ply";
 }
 
-/// The first word is OFF with its optional prefixes (ST, C, N, 4, n: e.g. COFF, NOFF, STOFF).
+/// The first word, after blank lines and `#` comments (as read_off reads them), is OFF with its
+/// optional prefixes (ST, C, N, 4, n: e.g. COFF, NOFF, STOFF).
 bool is_off(const FilePrefix& p) {
-  const std::size_t end = std::min(p.bytes.find_first_of(" \t\r\n"), p.bytes.size());
-  const std::string word = p.bytes.substr(0, end);
+  std::size_t begin = 0;
+  for (;;) {
+    begin = std::min(p.bytes.find_first_not_of(" \t\r\n\f\v", begin), p.bytes.size());
+    if (begin == p.bytes.size() || p.bytes[begin] != '#') break;
+    begin = std::min(p.bytes.find('\n', begin), p.bytes.size());
+  }
+  const std::size_t end = std::min(p.bytes.find_first_of(" \t\r\n\f\v#", begin), p.bytes.size());
+  const std::string word = p.bytes.substr(begin, end - begin);
   if (word.size() < 3 || word.size() > 8 || word.compare(word.size() - 3, 3, "OFF") != 0) return false;
   return std::all_of(word.begin(), word.end() - 3, [](char c) { return std::string("STCN4n").find(c) != std::string::npos; });
 }
 
 /// A binary STL: an 80-byte header, a little-endian triangle count n, then n 50-byte records.
 bool is_binary_stl(const FilePrefix& p) {
-  if (!p.size || p.bytes.size() < 84) return false;
+  if (!p.size || p.raw.size() < 84) return false;
   std::uint64_t n = 0;
-  for (int i = 3; i >= 0; --i) n = n * 256 + static_cast<unsigned char>(p.bytes[80 + static_cast<std::size_t>(i)]);
+  for (int i = 3; i >= 0; --i) n = n * 256 + static_cast<unsigned char>(p.raw[80 + static_cast<std::size_t>(i)]);
   return *p.size == 84 + 50 * n;
 }
 
@@ -100,15 +111,16 @@ std::string known_extensions() {
 }
 
 FilePrefix read_prefix(const std::string& path) {
-  InputFile file(path);
+  InputFile file(path, ByteOrderMark::keep);
   FilePrefix p;
-  p.bytes.resize(kPrefixBytes);
-  file.stream().read(p.bytes.data(), static_cast<std::streamsize>(kPrefixBytes));
-  p.bytes.resize(static_cast<std::size_t>(file.stream().gcount()));
+  p.raw.resize(kPrefixBytes);
+  file.stream().read(p.raw.data(), static_cast<std::streamsize>(kPrefixBytes));
+  p.raw.resize(static_cast<std::size_t>(file.stream().gcount()));
   file.check_read();
+  p.bytes = starts_with(p.raw, kByteOrderMark) ? p.raw.substr(kByteOrderMark.size()) : p.raw;
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!ec) p.size = size - (file.had_byte_order_mark() ? 3 : 0);
+  if (!ec) p.size = size;
   return p;
 }
 
@@ -128,6 +140,10 @@ MeshFormat detect_mesh_format(const std::string& path) {
     throw InputError(path, (extension.empty() ? std::string("no file extension")
                                               : "unknown mesh file extension '" + extension + "'") +
                                " (expected " + known_extensions() + ")");
+  // The extension's format first when its test is specific: a binary STL's free 80-byte header
+  // may begin with another format's magic word ("ply", "OFF"). OBJ's test (text) is not
+  // specific: a PLY or OFF file named .obj is reported as what it is.
+  if (by_name->format != MeshFormat::obj && by_name->content_matches(prefix)) return by_name->format;
   for (const FormatEntry& e : formats()) {
     if (!e.content_matches(prefix)) continue;
     if (&e == by_name) return e.format;
@@ -145,7 +161,9 @@ MeshFormat detect_mesh_format(const std::string& path) {
 TriangleMesh read_mesh(const std::string& path) {
   const FormatEntry& format = entry(detect_mesh_format(path));
   if (!format.read) throw InputError(path, std::string(format.name) + " meshes are not supported yet (convert to OBJ)");
-  InputFile file(path);
+  // The readers skip a byte order mark where their content is text (a binary STL's header may
+  // start with its bytes), so that a binary file's byte offsets in errors are the file's.
+  InputFile file(path, ByteOrderMark::keep);
   TriangleMesh mesh = format.read(file.stream(), path);
   file.check_read();
   if (mesh.vertices.empty()) throw InputError(path, "no vertices (an empty mesh)");

@@ -14,12 +14,17 @@
 #include <tuple>
 #include <vector>
 
+#include "io/polygon.hpp"
+
 namespace exactccd::io {
 namespace {
 
 std::string slurp(std::istream& in) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
+
+/// Where the text of `data` starts: after a UTF-8 byte order mark, if it has one.
+std::size_t text_start(const std::string& data) { return data.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0; }
 
 std::vector<std::string> split(const std::string& line) {
   std::istringstream ss(line);
@@ -80,13 +85,12 @@ bool parse_integer(const std::string& token, long long& value) {
 template <class Fail>
 void add_polygon(ObjMesh& mesh, const std::vector<long long>& poly, std::size_t vertex_count, Fail fail) {
   if (poly.size() < 3) fail("face with " + std::to_string(poly.size()) + " vertices (expected at least 3)");
-  for (std::size_t i = 0; i < poly.size(); ++i) {
+  for (std::size_t i = 0; i < poly.size(); ++i)
     if (poly[i] < 0 || static_cast<unsigned long long>(poly[i]) >= vertex_count)
       fail("face vertex index " + std::to_string(poly[i]) + " out of range (the file has " +
            std::to_string(vertex_count) + " vertices, indices from 0)");
-    for (std::size_t j = 0; j < i; ++j)
-      if (poly[i] == poly[j]) fail("degenerate face: vertex " + std::to_string(poly[i]) + " appears twice");
-  }
+  if (const auto repeated = first_repeated_vertex(poly))
+    fail("degenerate face: vertex " + std::to_string(*repeated) + " appears twice");
   for (std::size_t i = 2; i < poly.size(); ++i)
     mesh.triangles.push_back({static_cast<int>(poly[0]), static_cast<int>(poly[i - 1]), static_cast<int>(poly[i])});
 }
@@ -220,7 +224,7 @@ bool parse_ascii(const std::string& token, PlyType t, PlyValue& v, std::string& 
 
 ObjMesh read_ply(std::istream& in, const std::string& source) {
   const std::string data = slurp(in);
-  LineReader lines(data);
+  LineReader lines(data, text_start(data));  // binary offsets count from byte 0, the mark too
   std::string line;
   if (!lines.next(line) || line != "ply") throw ParseError(source, 1, "not a PLY file (the first line is not 'ply')");
   enum class Format { none, ascii, little, big } format = Format::none;
@@ -442,7 +446,7 @@ ObjMesh read_ply(std::istream& in, const std::string& source) {
 
 ObjMesh read_off(std::istream& in, const std::string& source) {
   const std::string data = slurp(in);
-  LineReader lines(data);
+  LineReader lines(data, text_start(data));
   std::string line;
   // The next line with tokens (comments removed); false at the end.
   const auto next_tokens = [&](std::vector<std::string>& t) {
@@ -453,7 +457,8 @@ ObjMesh read_off(std::istream& in, const std::string& source) {
     return false;
   };
   std::vector<std::string> t;
-  if (!next_tokens(t)) throw ParseError(source, lines.line(), "empty OFF file");
+  // Line 1 for an empty file (it has no line; ParseError lines are 1-based).
+  if (!next_tokens(t)) throw ParseError(source, std::max<std::size_t>(lines.line(), 1), "empty OFF file");
   const std::string keyword = t[0];
   if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
     throw ParseError(source, lines.line(), "not an OFF file (the first word is '" + keyword + "')");
@@ -565,7 +570,8 @@ ObjMesh read_stl(std::istream& in, const std::string& source) {
       return mesh;
     }
   }
-  if (data.rfind("solid", 0) != 0) {
+  // Not binary: ASCII, after a byte order mark if there is one.
+  if (data.compare(text_start(data), 5, "solid") != 0) {
     if (data.size() >= 84)
       throw InputError(source, "byte offset 80: binary STL of " + std::to_string(decode(bytes + 80, PlyType::u32, false).i) +
                                    " facets needs " + std::to_string(84 + 50 * static_cast<std::uint64_t>(decode(bytes + 80, PlyType::u32, false).i)) +
@@ -573,7 +579,7 @@ ObjMesh read_stl(std::istream& in, const std::string& source) {
     throw InputError(source, "byte offset 0: neither ASCII STL ('solid') nor binary STL (shorter than 84 bytes)");
   }
   // ASCII: a keyword stream, checked line by line.
-  LineReader lines(data);
+  LineReader lines(data, text_start(data));
   std::string line;
   enum class State { solid, facet_or_end, outer, vertex, endloop, endfacet, done } state = State::solid;
   std::array<int, 3> tri{};

@@ -25,7 +25,8 @@ namespace exactccd::io {
 /// ASCII body, and InputError ("<source>: byte offset N (...): reason") for a malformed binary
 /// body: an unknown type, missing x/y/z or face list, a wrong count of values, a non-finite
 /// coordinate, an index out of range or repeated in a face, a face of fewer than 3 vertices, a
-/// truncated file or data after the last element.
+/// truncated file or data after the last element. A UTF-8 byte order mark before `ply` is
+/// skipped; binary byte offsets count from the stream's first byte (the mark's too).
 ObjMesh read_ply(std::istream& in, const std::string& source_name);
 
 /// Parses an ASCII OFF mesh: the keyword (OFF, or COFF, NOFF, CNOFF, STOFF, ... whose extra
@@ -34,7 +35,7 @@ ObjMesh read_ply(std::istream& in, const std::string& source_name);
 /// indices and an optional colour (up to 4 numbers). `#` starts a comment; blank lines are
 /// skipped. Polygons are fan-triangulated. Throws ParseError naming the line on a wrong count,
 /// a malformed or non-finite number, an index out of range or repeated, data after the last
-/// face, 4OFF/nOFF (other dimensions) and binary OFF.
+/// face, 4OFF/nOFF (other dimensions) and binary OFF. A UTF-8 byte order mark is skipped.
 ObjMesh read_off(std::istream& in, const std::string& source_name);
 
 /// Parses an STL mesh, binary (80-byte header, little-endian uint32 count, 50-byte records of
@@ -44,7 +45,9 @@ ObjMesh read_off(std::istream& in, const std::string& source_name);
 /// -0 and +0 too) are merged into one vertex, numbered in order of first appearance; each
 /// facet is one triangle. Float coordinates are widened exactly; ASCII coordinates are read as
 /// the nearest doubles. Throws ParseError (ASCII: line) or InputError (binary: byte offset) on
-/// a malformed file, a non-finite coordinate, or a facet two of whose corners coincide.
+/// a malformed file, a non-finite coordinate, or a facet two of whose corners coincide. The size
+/// test comes first, on the bytes as they are (a binary header may start with anything); an
+/// ASCII file may start with a UTF-8 byte order mark.
 ObjMesh read_stl(std::istream& in, const std::string& source_name);
 
 }  // namespace exactccd::io

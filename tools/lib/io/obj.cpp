@@ -1,5 +1,6 @@
 #include "io/obj.hpp"
 
+#include <array>
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -7,6 +8,8 @@
 #include <ostream>
 #include <sstream>
 #include <system_error>
+
+#include "io/polygon.hpp"
 
 namespace exactccd::io {
 namespace {
@@ -41,27 +44,28 @@ bool parse_long(const std::string& s, long& value) {
   return !s.empty() && error == std::errc() && end == s.data() + s.size();
 }
 
-/// A face vertex reference `i`, `i/t`, `i//n` or `i/t/n`: its index i (1-based or negative);
-/// t and n, when present, must be nonzero integers too.
-long parse_reference(const std::string& token, const std::string& source, std::size_t line) {
+/// A reference `i`, `i/t`, `i//n` or `i/t/n` as written: i, t and n (0 when absent); i is
+/// nonzero, and t and n, when present, must be nonzero integers too.
+using Reference = std::array<long, 3>;
+
+Reference parse_reference(const std::string& token, const std::string& source, std::size_t line) {
   const std::string index = token.substr(0, token.find('/'));
-  long value = 0;
-  if (!parse_long(index, value))
+  Reference r{0, 0, 0};
+  if (!parse_long(index, r[0]))
     throw ParseError(source, line, "face vertex '" + token + "' does not start with an integer index");
-  if (value == 0) throw ParseError(source, line, "face vertex index 0 (OBJ indices start at 1)");
+  if (r[0] == 0) throw ParseError(source, line, "face vertex index 0 (OBJ indices start at 1)");
   if (index.size() < token.size()) {  // "/t", "//n", "/t/n"
     const std::string rest = token.substr(index.size() + 1);
     const auto slash = rest.find('/');
     const std::string texture = rest.substr(0, slash);
     const std::string normal = slash == std::string::npos ? "" : rest.substr(slash + 1);
-    long t = 0, n = 0;
-    const bool texture_ok = texture.empty() ? slash != std::string::npos : parse_long(texture, t) && t != 0;
-    const bool normal_ok = slash == std::string::npos || (parse_long(normal, n) && n != 0);
+    const bool texture_ok = texture.empty() ? slash != std::string::npos : parse_long(texture, r[1]) && r[1] != 0;
+    const bool normal_ok = slash == std::string::npos || (parse_long(normal, r[2]) && r[2] != 0);
     if (!texture_ok || !normal_ok)
       throw ParseError(source, line,
                        "face vertex '" + token + "' is malformed (expected i, i/t, i//n or i/t/n, nonzero integers)");
   }
-  return value;
+  return r;
 }
 
 /// Checks that tokens t[1..] are between `least` and `most` finite numbers; `what` names them.
@@ -91,10 +95,59 @@ bool is_ignored_statement(const std::string& keyword) {
   return false;
 }
 
-/// A face as read: 0-based indices (positive references not yet checked against the count).
+/// A face as read: 0-based indices (positive references checked at the end of the file).
 struct Face {
   std::vector<long> vertices;
   std::size_t line;
+};
+
+/// What a reference names: vertices (v), texture vertices (vt) and normals (vn), by position
+/// in Reference.
+constexpr const char* kElement[3] = {"vertex", "texture vertex", "normal"};
+constexpr const char* kElements[3] = {"vertices", "texture vertices", "normals"};
+
+/// The references of the f, l and p lines against the v, vt and vn lines: a negative index
+/// counts back from the elements read so far (checked at once), a positive one may name an
+/// element of a later line (checked at the end of the file, when the counts are known). An OBJ
+/// file naming an element it lacks is malformed, whether the mesh uses the element (vertices)
+/// or not (texture vertices and normals).
+class References {
+ public:
+  explicit References(const std::string& source) : source_(source) {}
+  /// One more element of kind 0 (v), 1 (vt) or 2 (vn).
+  void count(int element) { ++count_[element]; }
+  /// Checks reference r of a `statement` (face, line, point) on `line`; returns the 0-based
+  /// vertex index it names.
+  long resolve(const Reference& r, const char* statement, std::size_t line) {
+    for (int e = 0; e < 3; ++e) {
+      if (r[e] < 0 && count_[e] + r[e] < 0)
+        throw ParseError(source_, line,
+                         std::string(statement) + " " + kElement[e] + " " + std::to_string(r[e]) + " refers before the first " +
+                             kElement[e] + " (" + std::to_string(count_[e]) + " " + kElements[e] + " read so far)");
+      if (r[e] > count_[e]) forward_.push_back({r[e], e, statement, line});
+    }
+    return r[0] < 0 ? count_[0] + r[0] : r[0] - 1;
+  }
+  /// At the end of the file: throws for the first forward reference past the elements read.
+  void check_forward() const {
+    for (const Forward& f : forward_)
+      if (f.index > count_[f.element])
+        throw ParseError(source_, f.line,
+                         std::string(f.statement) + " " + kElement[f.element] + " " + std::to_string(f.index) +
+                             " out of range (the file has " + std::to_string(count_[f.element]) + " " +
+                             kElements[f.element] + ")");
+  }
+
+ private:
+  struct Forward {
+    long index;
+    int element;
+    const char* statement;
+    std::size_t line;
+  };
+  const std::string& source_;
+  long count_[3] = {0, 0, 0};
+  std::vector<Forward> forward_;
 };
 
 }  // namespace
@@ -102,6 +155,7 @@ struct Face {
 ObjMesh read_obj(std::istream& in, const std::string& source_name) {
   ObjMesh mesh;
   std::vector<Face> faces;
+  References references(source_name);
   std::size_t line_number = 0;
   skip_byte_order_mark(in);
   for (std::string line; std::getline(in, line);) {
@@ -122,17 +176,21 @@ ObjMesh read_obj(std::istream& in, const std::string& source_name) {
       mesh.vertices.push_back({parse_coordinate(t[1], source_name, line_number),
                                parse_coordinate(t[2], source_name, line_number),
                                parse_coordinate(t[3], source_name, line_number)});
+      references.count(0);
     } else if (t[0] == "vt" || t[0] == "vp") {
       check_numbers(t, 1, 3, t[0] == "vt" ? "texture vertex" : "parameter vertex", source_name, line_number);
+      if (t[0] == "vt") references.count(1);
     } else if (t[0] == "vn") {
       check_numbers(t, 3, 3, "normal", source_name, line_number);
+      references.count(2);
     } else if (t[0] == "l" || t[0] == "p") {
       const std::size_t least = t[0] == "l" ? 2 : 1;
       if (t.size() - 1 < least)
         throw ParseError(source_name, line_number,
                          std::string(t[0] == "l" ? "line" : "point") + " with " + std::to_string(t.size() - 1) +
                              " vertices (expected at least " + std::to_string(least) + ")");
-      for (std::size_t i = 1; i < t.size(); ++i) parse_reference(t[i], source_name, line_number);
+      for (std::size_t i = 1; i < t.size(); ++i)
+        references.resolve(parse_reference(t[i], source_name, line_number), t[0] == "l" ? "line" : "point", line_number);
     } else if (is_ignored_statement(t[0])) {
       continue;
     } else if (is_free_form_statement(t[0])) {
@@ -147,30 +205,16 @@ ObjMesh read_obj(std::istream& in, const std::string& source_name) {
         throw ParseError(source_name, line_number,
                          "face with " + std::to_string(t.size() - 1) + " vertices (expected at least 3)");
       Face f{{}, line_number};
-      const long count = static_cast<long>(mesh.vertices.size());
-      for (std::size_t i = 1; i < t.size(); ++i) {
-        const long r = parse_reference(t[i], source_name, line_number);
-        if (r < 0 && count + r < 0)
-          throw ParseError(source_name, line_number,
-                           "face vertex " + std::to_string(r) + " refers before the first vertex (" +
-                               std::to_string(count) + " vertices read so far)");
-        f.vertices.push_back(r < 0 ? count + r : r - 1);
-      }
-      for (std::size_t i = 0; i < f.vertices.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-          if (f.vertices[i] == f.vertices[j])
-            throw ParseError(source_name, line_number,
-                             "degenerate face: vertex " + std::to_string(f.vertices[i] + 1) + " appears twice");
+      for (std::size_t i = 1; i < t.size(); ++i)
+        f.vertices.push_back(references.resolve(parse_reference(t[i], source_name, line_number), "face", line_number));
+      if (const auto repeated = first_repeated_vertex(f.vertices))
+        throw ParseError(source_name, line_number,
+                         "degenerate face: vertex " + std::to_string(*repeated + 1) + " appears twice");
       faces.push_back(std::move(f));
     }
   }
-  const long count = static_cast<long>(mesh.vertices.size());
+  references.check_forward();  // every index is in range from here on
   for (const Face& f : faces) {
-    for (long v : f.vertices)
-      if (v >= count)
-        throw ParseError(source_name, f.line,
-                         "face vertex " + std::to_string(v + 1) + " out of range (the file has " +
-                             std::to_string(count) + " vertices)");
     for (std::size_t i = 2; i < f.vertices.size(); ++i)
       mesh.triangles.push_back({static_cast<int>(f.vertices[0]), static_cast<int>(f.vertices[i - 1]),
                                 static_cast<int>(f.vertices[i])});

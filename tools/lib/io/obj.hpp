@@ -29,9 +29,10 @@ struct ObjMesh {
 /// exactly as the nearest doubles (std::from_chars). Throws ParseError naming source_name and
 /// the line on: any other keyword (free-form geometry included: it would be lost silently),
 /// a malformed or non-finite number, a wrong count of coordinates or face vertices, an index
-/// that is zero, not an integer or refers to no vertex (checked at the end of the file for
-/// positive indices, which may refer forward), or a face that repeats a vertex (a degenerate
-/// face). An input without vertices gives an empty mesh (io::read_mesh rejects that).
+/// that is zero or not an integer, a reference of an f, l or p line to no vertex, texture vertex
+/// (vt) or normal (vn) of the file (checked at the end of the file for positive indices, which
+/// may refer forward), or a face that repeats a vertex (a degenerate face). An input without
+/// vertices gives an empty mesh (io::read_mesh rejects that).
 ObjMesh read_obj(std::istream& in, const std::string& source_name);
 
 /// Writes vertices and triangles as OBJ (`v` lines with the shortest decimal that reads back as

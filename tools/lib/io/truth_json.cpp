@@ -27,10 +27,13 @@ std::vector<bool> read_truth_json(std::istream& in, const std::string& source) {
       ++end;
     return "'" + text.substr(i, end - i) + "'";
   };
+  // The line of an error: the line of position i, or at the end of the input its last line (a
+  // final line break starts no line of its own).
+  const auto where = [&] { return i >= text.size() && line > 1 && text.back() == '\n' ? line - 1 : line; };
   std::vector<bool> out;
   skip_space();
   if (i >= text.size() || text[i] != '[')
-    throw ParseError(source, line, "expected a JSON array of booleans ('['), found " + found());
+    throw ParseError(source, where(), "expected a JSON array of booleans ('['), found " + found());
   ++i;
   skip_space();
   if (i < text.size() && text[i] == ']') {
@@ -45,7 +48,7 @@ std::vector<bool> read_truth_json(std::istream& in, const std::string& source) {
         out.push_back(false);
         i += 5;
       } else {
-        throw ParseError(source, line, "value " + std::to_string(out.size() + 1) + " is not true or false: found " + found());
+        throw ParseError(source, where(), "value " + std::to_string(out.size() + 1) + " is not true or false: found " + found());
       }
       skip_space();
       if (i < text.size() && text[i] == ',') {
@@ -56,11 +59,11 @@ std::vector<bool> read_truth_json(std::istream& in, const std::string& source) {
         ++i;
         break;
       }
-      throw ParseError(source, line, "expected ',' or ']' after value " + std::to_string(out.size()) + ", found " + found());
+      throw ParseError(source, where(), "expected ',' or ']' after value " + std::to_string(out.size()) + ", found " + found());
     }
   }
   skip_space();
-  if (i != text.size()) throw ParseError(source, line, "data after the array: " + found());
+  if (i != text.size()) throw ParseError(source, where(), "data after the array: " + found());
   return out;
 }
 
