@@ -1,6 +1,6 @@
 // The one entry point of the library's queries (exactccd/ccd.hpp, exactccd/rational.hpp):
 // validation, the floating-point environment, then the method's stage lists
-// (pipeline/methods.hpp). Every public query function is a one-line call of answer_query or
+// (questions/methods.hpp). Every public query function is a one-line call of answer_query or
 // answer_rational_query, which this file defines for every kind.
 #include <cmath>
 #include <stdexcept>
@@ -14,7 +14,7 @@
 #include "exactccd/rational.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "numeric/fp_environment.hpp"
-#include "pipeline/methods.hpp"
+#include "questions/methods.hpp"
 #include "separation/exact_separation.hpp"
 
 namespace exactccd {
@@ -61,13 +61,13 @@ std::optional<TimeInterval> answer_query(const Query& q, const CcdParams& params
   require_finite(q, want_toi);
   require_valid<Query>(params, method, want_toi);
   const pipeline::Question question{params, want_toi};
-  if (method == Method::exact) return pipeline::exact_method(q, question);
-  return pipeline::filtered_method(q, question, counters);
+  if (method == Method::exact) return questions::exact_method(q, question);
+  return questions::filtered_method(q, question, counters);
 }
 
 template <class Query>
 std::optional<TimeInterval> answer_checked_query(const Query& q, const CcdParams& params, bool want_toi) {
-  return pipeline::filtered_method(q, pipeline::Question{params, want_toi}, nullptr);
+  return questions::filtered_method(q, pipeline::Question{params, want_toi}, nullptr);
 }
 
 template <class RationalQuery>

@@ -6,7 +6,7 @@
 // decided (the primitives collide, with the TOI when the stage certified it, or they stay
 // apart), or undecided; what it learned on the way (a root cell, the feature pairs proven
 // apart, ...) it leaves in the Work's findings for the stages after it. run_stages.hpp is the
-// whole policy; pipeline/filtered_method.cpp holds the stage list of each question.
+// whole policy; the stage lists of each question are in lib/questions/.
 #pragma once
 
 #include <cstdint>

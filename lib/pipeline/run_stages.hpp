@@ -56,6 +56,15 @@ class StageRun {
   bool done_ = false;
 };
 
+/// The TOI restricted to [0, tmax]: the exact time t lies in [lo, hi] (lo == hi, or lo < t < hi
+/// with no double between them), so for a double tmax, t <= tmax iff hi <= tmax (or lo <= tmax
+/// when lo == hi == t).
+inline std::optional<TimeInterval> cut(const std::optional<TimeInterval>& t, double tmax) {
+  if (!t) return t;
+  const bool within = t->lo == t->hi ? t->lo <= tmax : t->hi <= tmax;
+  return within ? t : std::nullopt;
+}
+
 /// Runs the stages on `work` in order until one answers its question (counted in
 /// work.counters), and returns the answer: the TOI when asked (else kCollisionWithoutToi) for a
 /// collision, nullopt for none.

@@ -6,7 +6,7 @@
 
 #include "contact/contact_rule.hpp"
 #include "rigid/interval_frame.hpp"
-#include "rigid/isolation.hpp"
+#include "rigid/isolation_limits.hpp"
 #include "rigid/positions.hpp"
 #include "rigid/sign_at.hpp"
 
@@ -15,14 +15,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// The sign oracle over a cell: certain interval signs, an exact [0, 0] as 0, else unknown.
-int oracle_sign(const Interval& x) {
-  if (x.inf() > 0) return 1;
-  if (x.sup() < 0) return -1;
-  if (x.inf() == 0 && x.sup() == 0) return 0;
-  return contact::kUnknownSign;
-}
-
 template <class Query>
 class ContactWalk {
  public:
@@ -30,10 +22,7 @@ class ContactWalk {
 
   /// V's exact sign at the double t (an interval, else double-double or GMP).
   int sign_at(double t) {
-    const Interval v = frame_.volume().at(t);
-    if (v.inf() > 0) return 1;
-    if (v.sup() < 0) return -1;
-    if (v.inf() == 0 && v.sup() == 0) return 0;
+    if (const int s = numeric::interval_sign(frame_.volume().at(t)); s != contact::kUnknownSign) return s;
     const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // double-double needs it
     return volume_sign_at(q_, t, used_gmp_);
   }
@@ -43,7 +32,7 @@ class ContactWalk {
     for (int attempt = 0;; ++attempt) {
       const auto boxes = cell.lo == cell.hi ? frame_.at(cell.lo) : frame_.boxes(cell.lo, cell.hi);
       const auto terms = value_terms<Query>(boxes);
-      const contact::Truth t = contact::in_plane_contact(terms, [](const Interval& x) { return oracle_sign(x); });
+      const contact::Truth t = contact::in_plane_contact(terms, [](const Interval& x) { return numeric::interval_sign(x); });
       if (t != contact::Truth::unknown || cell.lo == cell.hi || attempt == 24) return t;
       const double mid = cell.lo + (cell.hi - cell.lo) / 2;
       if (!(cell.lo < mid && mid < cell.hi)) return t;

@@ -1,5 +1,5 @@
 // The interval stage of the rigid contact question (d = 0; docs/design.md, 9.4). On the
-// normalized query (normalized.hpp), in interval arithmetic (interval_frame.hpp):
+// normalized query (rigid_unit_scaling.hpp), in interval arithmetic (interval_frame.hpp):
 //  1. the volume polynomial V (degree 5, V's sign on [0, 1]) in the Bernstein basis; where its
 //     value at t = 0 or 1 is uncertain, its exact sign there (sign_at.hpp);
 //  2. its roots in [0, 1] isolated by Descartes' rule (numeric/bernstein_isolation.hpp): cells

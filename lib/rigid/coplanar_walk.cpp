@@ -7,18 +7,18 @@
 #include <cmath>
 
 #include "contact/contact_rule.hpp"
-#include "filter/interval/isolation.hpp"  // IntervalSignOracle
-#include "rigid/isolation.hpp"
+#include "contact/interval_oracle.hpp"
+#include "rigid/isolation_limits.hpp"
 #include "rigid/rigid_frame.hpp"
 #include "rigid/sign_at.hpp"
 
 namespace exactccd::rigid {
 namespace {
 
-using I = CGAL::Interval_nt<false>;
+using I = numeric::Interval;
 using IQuery = RigidEdgeEdgeQueryT<I>;
 using Orientation = contact::Poly<I, 10>;
-using filter::interval::exactly_zero;
+using contact::exactly_zero;
 
 IQuery to_intervals(const RigidEdgeEdgeQuery& q) {
   const auto pose = [](const RigidPose& p) {
@@ -70,7 +70,7 @@ RootCell tightest(const RigidEdgeEdgeQuery& q, const Candidate& candidate, int a
 template <class Terms>
 contact::Truth rule_at_root(const Terms& P, const Orientation* o, RootCell& cell) {
   for (int attempt = 0;; ++attempt) {
-    const filter::interval::IntervalSignOracle oracle{I(cell.lo, cell.hi), o};
+    const contact::IntervalSignOracle oracle{I(cell.lo, cell.hi), o};
     const contact::Truth t = contact::in_plane_contact(P, oracle);
     if (t != contact::Truth::unknown || o == nullptr || cell.lo == cell.hi || attempt == 40) return t;
     const double mid = cell.lo + (cell.hi - cell.lo) / 2;

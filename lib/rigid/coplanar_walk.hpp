@@ -23,7 +23,7 @@
 // The walk: every o_i's roots in [0, 1] are isolated (numeric/bernstein_isolation.hpp, degree
 // 10; a successful isolation also shows o_i is not identically zero, so its roots are finitely
 // many and all listed); the rule is evaluated at t = 0 and at each root cell with signs certified over the
-// cell, the defining o_i counted as zero (filter/interval's IntervalSignOracle: the other signs
+// cell, the defining o_i counted as zero (contact/interval_oracle.hpp's IntervalSignOracle: the other signs
 // certain over the cell are their signs at the root), the cell halved by o_i's certain sign at
 // its midpoint while the rule is uncertain. Then, over [0, tmax]: every candidate certainly not
 // in contact is no collision (the claim); without want_toi, a candidate certainly in contact

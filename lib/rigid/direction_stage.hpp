@@ -16,7 +16,7 @@
 // apart at every t in [0, 1] (Cauchy-Schwarz), likewise with A and B exchanged.
 //
 // How it is certified (u = 2^-53; round to nearest, the entry points' environment).
-//  1. Scaling (normalized.hpp): every length below 2 in magnitude, the largest in [1, 2); every
+//  1. Scaling (rigid_unit_scaling.hpp): every length below 2 in magnitude, the largest in [1, 2); every
 //     quaternion component below 2, the largest of each body in [1, 2), so |q|^2 in [1, 16).
 //  2. Rotations: the entries of M(q) are computed with an error below gamma_4 |q|^2 (diagonal:
 //     four squares and three sums; off-diagonal: two products, a difference, a doubling) and
@@ -56,7 +56,7 @@
 
 namespace exactccd::rigid {
 
-/// The direction stage's view of a normalized query (normalized.hpp): the body points rotated at
+/// The direction stage's view of a normalized query (rigid_unit_scaling.hpp): the body points rotated at
 /// t = 0 and 1, the translations relative to A's c(0), the sagitta terms (header, steps 1-4).
 template <class Query>
 class DirectionFrame {

@@ -26,7 +26,7 @@
 #include "exact/algebraic_kernel.hpp"
 #include "exact/stack_budget.hpp"
 #include "rigid/rigid_frame.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::rigid {
 namespace {
@@ -46,15 +46,13 @@ mpz_class common_denominator(const std::vector<const mpq_class*>& values) {
 
 Z times(const mpq_class& x, const mpz_class& l) { return x.get_num() * (l / x.get_den()); }
 
+/// The query type of the kind of Query in integers.
 template <class Query>
-struct IntegerQuery {
-  using Type = std::conditional_t<std::is_same_v<kind_of<Query>, kinds::VertexFace>, RigidVertexFaceQueryT<Z>,
-                                  RigidEdgeEdgeQueryT<Z>>;
-};
+using IntegerQuery = typename kinds::kind_of<Query>::template RigidQuery<Z>;
 
 /// The query and d in integers (step 1).
 template <class Query>
-std::pair<typename IntegerQuery<Query>::Type, Z> to_integers(const Query& q, const mpq_class& d) {
+std::pair<IntegerQuery<Query>, Z> to_integers(const Query& q, const mpq_class& d) {
   std::vector<const mpq_class*> lengths{&d}, qa, qb;
   const auto add3 = [](std::vector<const mpq_class*>& v, const Vec3T<mpq_class>& p) {
     v.insert(v.end(), {&p.x, &p.y, &p.z});
@@ -71,12 +69,12 @@ std::pair<typename IntegerQuery<Query>::Type, Z> to_integers(const Query& q, con
   const auto quat = [](const QuaternionT<mpq_class>& r, const mpz_class& l) {
     return QuaternionT<Z>{times(r.w, l), times(r.x, l), times(r.y, l), times(r.z, l)};
   };
-  typename IntegerQuery<Query>::Type out;
+  IntegerQuery<Query> out;
   out.a_t0 = {vec(q.a_t0.c), quat(q.a_t0.q, LA)};
   out.a_t1 = {vec(q.a_t1.c), quat(q.a_t1.q, LA)};
   out.b_t0 = {vec(q.b_t0.c), quat(q.b_t0.q, LB)};
   out.b_t1 = {vec(q.b_t1.c), quat(q.b_t1.q, LB)};
-  if constexpr (std::is_same_v<kind_of<Query>, kinds::VertexFace>)
+  if constexpr (std::is_same_v<kinds::kind_of<Query>, kinds::VertexFace>)
     out.p = vec(q.p), out.a = vec(q.a), out.b = vec(q.b), out.c = vec(q.c);
   else
     out.a0 = vec(q.a0), out.a1 = vec(q.a1), out.b0 = vec(q.b0), out.b1 = vec(q.b1);
@@ -232,7 +230,7 @@ std::vector<IntegerTerm> integer_terms(const ScaledFrame<Z>& frame, const Z& d, 
   const auto dd = d2 * frame.D * frame.D;  // (d D)^2
   std::vector<IntegerTerm> terms;
   for (const kinds::Feature& f : Kind::features)
-    separation::feature_condition(f, rel, dd, [&](const auto& distance, const auto&... positive) {
+    contact::feature_condition(f, rel, dd, [&](const auto& distance, const auto&... positive) {
       IntegerTerm t{reduced.note(reduce(distance, factors)), {}};
       (t.positive.push_back(reduced.note(reduce(positive, factors))), ...);
       terms.push_back(std::move(t));
@@ -246,7 +244,7 @@ std::optional<TimeInterval> separation_toi(const Query& q, const RationalCcdPara
   const ScaledFrame<Z> frame = scaled_frame(integer);
   const Factors factors(frame);
   Reduced reduced(factors);
-  const std::vector<IntegerTerm> terms = integer_terms<kind_of<Query>>(frame, d, reduced, factors);
+  const std::vector<IntegerTerm> terms = integer_terms<kinds::kind_of<Query>>(frame, d, reduced, factors);
   std::optional<TimeInterval> result;
   exact::run_with_stack_for_depth(reduced.depth_bound(), [&] {
     const Kernel kernel;
@@ -280,7 +278,7 @@ ReducedDegrees degrees_of(const Query& q, const mpq_class& d_rational) {
   const auto degree = [](const IntegerPoly& p) { return CGAL::is_zero(p) ? -1 : CGAL::degree(p); };
   out.volume = degree(reduced(P.volume()));
   contact::for_each_in_plane_poly(P, [&](const auto& p) { out.in_plane = std::max(out.in_plane, degree(reduced(p))); });
-  for (const IntegerTerm& t : integer_terms<kind_of<Query>>(frame, d, reduced, factors)) {
+  for (const IntegerTerm& t : integer_terms<kinds::kind_of<Query>>(frame, d, reduced, factors)) {
     out.term = std::max(out.term, degree(t.distance));
     for (const IntegerPoly& g : t.positive) out.term = std::max(out.term, degree(g));
   }

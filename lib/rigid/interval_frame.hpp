@@ -12,8 +12,6 @@
 // Everything here needs upward rounding (CGAL::Protect_FPU_rounding<true>) held by the caller.
 #pragma once
 
-#include <CGAL/Interval_nt.h>
-
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -21,12 +19,13 @@
 
 #include "contact/polynomial.hpp"
 #include "exactccd/rigid.hpp"
+#include "numeric/interval.hpp"
 #include "rigid/quaternion.hpp"
 #include "rigid/rigid_frame.hpp"
 
 namespace exactccd::rigid {
 
-using Interval = CGAL::Interval_nt<false>;
+using numeric::Interval;
 
 /// A value and its derivative (forward differentiation), both enclosures over a time cell.
 struct Dual {
@@ -82,7 +81,7 @@ struct SlopedPoly {
 template <class Query>
 class IntervalFrame {
  public:
-  using Kind = kind_of<Query>;
+  using Kind = kinds::kind_of<Query>;
   using IQuery = std::conditional_t<std::is_same_v<Kind, kinds::VertexFace>, RigidVertexFaceQueryT<Interval>,
                                     RigidEdgeEdgeQueryT<Interval>>;
 

@@ -15,7 +15,7 @@ namespace {
 
 template <class Query>
 std::string function_name(bool want_toi) {
-  return "exactccd::rigid_" + std::string(rigid::kind_of<Query>::function) + (want_toi ? "_toi" : "_ccd");
+  return "exactccd::rigid_" + std::string(kinds::kind_of<Query>::function) + (want_toi ? "_toi" : "_ccd");
 }
 
 template <class Query>

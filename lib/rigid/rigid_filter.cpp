@@ -1,7 +1,7 @@
 // The filtered method for rigid queries as a stage list of the one pipeline protocol
 // (pipeline/outcome.hpp, run_stages.hpp; docs/design.md 9.4). Each stage is a type with its
 // counter and `Outcome operator()(Work<Query>&)`; the order, for every question, is:
-//   NormalizedStage      the query and d scaled exactly by powers of two (normalized.hpp) into
+//   NormalizedStage      the query and d scaled exactly by powers of two (rigid_unit_scaling.hpp) into
 //                        the Work's replacement; where a scaling is inexact, the exact path
 //                        answers at once (counted `exact`);
 //   DirectionStage       a certified separating direction over the step (direction_stage.hpp,
@@ -22,8 +22,8 @@
 #include "rigid/coplanar_walk.hpp"
 #include "rigid/direction_stage.hpp"
 #include "rigid/exact_rigid.hpp"
-#include "rigid/normalized.hpp"
-#include "rigid/separation_walk.hpp"
+#include "rigid/rigid_unit_scaling.hpp"
+#include "rigid/rigid_separation_walk.hpp"
 
 namespace exactccd::rigid {
 namespace {
@@ -55,12 +55,12 @@ Outcome exact_outcome(const Query& q, const pipeline::Question& question) {
   return t ? Outcome::collides(t) : Outcome::separate();
 }
 
-/// The query normalized into the Work's replacement (the same question: normalized.hpp).
+/// The query normalized into the Work's replacement (the same question: rigid_unit_scaling.hpp).
 struct NormalizedStage {
   static constexpr Counter counter = &StageCounters::exact;  ///< only when it answers exactly
   template <class Query>
   Outcome operator()(Work<Query>& work) const {
-    const auto scaled = normalized(work.query(), work.question.params.min_distance);
+    const auto scaled = unit_scaled(work.query(), work.question.params.min_distance);
     if (!scaled) return exact_outcome(work.query(), work.question);  // an inexact scaling
     work.replacement() = scaled->first;
     work.use_replacement();

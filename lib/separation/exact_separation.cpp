@@ -12,7 +12,7 @@
 
 #include "exact/algebraic_kernel.hpp"
 #include "exact/stack_budget.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::separation {
 namespace {
@@ -35,7 +35,7 @@ std::vector<IntegerTerm> integer_terms(const Query& q, const RationalCcdParams& 
   const mpq_class d2 = params.min_distance * params.min_distance;
   std::vector<IntegerTerm> terms;
   bits = 0;
-  for (const Term<mpq_class>& t : separation::terms<Kind>(points3<mpq_class>(q), d2, use.data())) {
+  for (const contact::Term<mpq_class>& t : contact::terms<Kind>(contact::points3<mpq_class>(q), d2, use.data())) {
     IntegerTerm it{integer_poly(t.distance), {}};
     bits = std::max(bits, coefficient_bits(it.distance));
     for (int i = 0; i < t.positives; ++i) {

@@ -21,7 +21,7 @@ namespace exactccd::rigid {
 
 /// The query and d scaled as in the file comment, or nullopt when a scaling is inexact.
 template <class Query>
-std::optional<std::pair<Query, double>> normalized(const Query& query, double d) {
+std::optional<std::pair<Query, double>> unit_scaled(const Query& query, double d) {
   Query q = query;
   bool exact = true;
   const auto scaled = [&](double v, const numeric::UnitScale& unit) {

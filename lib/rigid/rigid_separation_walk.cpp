@@ -1,5 +1,5 @@
 // The interval stage of the rigid minimum-separation question (d > 0; docs/design.md, 9.4), the
-// walk of separation/interval_separation.hpp on the rigid model's terms. On the normalized
+// walk of separation/separation_walk.hpp on the rigid model's terms. On the normalized
 // query, in interval arithmetic, the feature-pair terms (separation_terms.hpp) of the scaled
 // positions (interval_frame.hpp; d D(t) in place of d: each term is the true one times a
 // positive power of D, 9.1) are evaluated
@@ -18,7 +18,7 @@
 //     (intervals, else double-double, else GMP: sign_at.hpp). Without the TOI asked, that cell, or
 //     a term certainly holding at a cell's midpoint, ends the walk: a collision.
 //  3. Every cell excluded: no collision. Anything else: undecided (the exact path answers).
-#include "rigid/separation_walk.hpp"
+#include "rigid/rigid_separation_walk.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -31,7 +31,7 @@
 #include "rigid/interval_frame.hpp"
 #include "rigid/positions.hpp"
 #include "rigid/sign_at.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::rigid {
 namespace {
@@ -55,7 +55,7 @@ std::array<TermValues<R>, Kind::features.size()> terms_of(const std::array<Vec3T
   const R dd = dD * dD;
   for (std::size_t k = 0; k < Kind::features.size(); ++k) {
     if (!(open >> k & 1)) continue;
-    separation::feature_condition(Kind::features[k], rel, dd, [&](const R& f, const auto&... g) {
+    contact::feature_condition(Kind::features[k], rel, dd, [&](const R& f, const auto&... g) {
       out[k].value[0] = f;
       int i = 1;
       ((out[k].value[i++] = g), ...);
@@ -68,7 +68,7 @@ std::array<TermValues<R>, Kind::features.size()> terms_of(const std::array<Vec3T
 template <class Query>
 class SeparationWalk {
  public:
-  using Kind = kind_of<Query>;
+  using Kind = kinds::kind_of<Query>;
   static constexpr int kMaxDepth = 40;
   /// The most cells one walk examines: a term within rounding of holding over a long stretch
   /// (a distance staying near d) would otherwise split every cell down to the depth limit.

@@ -1,24 +1,30 @@
-// The two methods of the library as stage lists of the one protocol (pipeline/outcome.hpp,
-// docs/design.md 4b.3 and 5): every question's stage order reads in one function here, or in
-// contact_question.cpp for the contact question of vertex-face and edge-edge queries.
+// The two methods of the library for linear motion as stage lists of the one protocol
+// (pipeline/outcome.hpp, docs/design.md 4b.3 and 5): every question's stage order reads in one
+// function here, or in contact_question.cpp for the contact question of vertex-face and
+// edge-edge queries.
 // Included by the entry point (api/entry_point.cpp), which instantiates them for every kind.
 #pragma once
 
 #include <optional>
 #include <type_traits>
 
+#include "contact/separation_terms.hpp"
+#include "exact/exact_ccd.hpp"
 #include "exactccd/stats.hpp"
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
-#include "pipeline/contact_question.hpp"
-#include "pipeline/exact_stages.hpp"
 #include "pipeline/outcome.hpp"
 #include "pipeline/run_stages.hpp"
+#include "questions/contact_question.hpp"
+#include "separation/exact_separation.hpp"
 #include "separation/separating_direction.hpp"
-#include "separation/separation_terms.hpp"
 #include "separation/separation_walk.hpp"
 
-namespace exactccd::pipeline {
+namespace exactccd::questions {
+
+using pipeline::Counter;
+using pipeline::Outcome;
+using pipeline::Work;
 
 /// The kinds whose contact question has stages of its own (kinds::HasContactStages: the volume
 /// filter and the contact rule of lib/contact): vertex-face and edge-edge.
@@ -35,7 +41,7 @@ auto as_contact_query(const Query& q) {
   static_assert(kinds::HasContactStages<ContactKind>::value, "a kind's contact question needs contact stages");
   constexpr int P = Kind::points;
   constexpr int C = ContactKind::points;
-  const auto x = separation::points3<double>(q);  // 2D points at z = 0
+  const auto x = contact::points3<double>(q);  // 2D points at z = 0
   std::array<Vec3, 2 * C> e;
   for (int at = 0; at < 2; ++at)
     for (int i = 0; i < C; ++i) e[at * C + i] = x[at * P + Kind::contact_points[i]];
@@ -105,7 +111,7 @@ std::optional<TimeInterval> filtered_method(const Query& q, const Question& ques
                     separation::SeparatingDirectionStage{},  // a direction keeps them > d apart
                     ContactProbeStage{},                     // answer alone: touching is within d
                     separation::SeparationWalkStage{},       // the terms over time cells, intervals
-                    ExactSeparationStage{});                 // CGAL's algebraic kernel: always decides
+                    separation::ExactSeparationStage{});     // CGAL's algebraic kernel: always decides
 }
 
 /// A query of any kind by the exact method (GMP and CGAL throughout; not counted): the contact
@@ -116,11 +122,11 @@ std::optional<TimeInterval> exact_method(const Query& q, const Question& questio
   if constexpr (has_contact_stages<Query>) {
     if (question.params.min_distance == 0) {
       Work<Query> work{q, {question.params, question.want_toi || question.params.tmax < 1}, nullptr};
-      return cut(run_stages(work, ExactContactStage{}), question.params.tmax);
+      return pipeline::cut(run_stages(work, exact::ExactContactStage{}), question.params.tmax);
     }
   }
   Work<Query> work{q, question, nullptr};
-  return run_stages(work, ExactSeparationStage{});
+  return run_stages(work, separation::ExactSeparationStage{});
 }
 
-}  // namespace exactccd::pipeline
+}  // namespace exactccd::questions
