@@ -16,7 +16,12 @@ namespace {
 using pipeline::Work;
 
 /// The contact question's stage order, cheapest first (docs/design.md, 5). Its TOI is asked for
-/// whenever tmax < 1 (a collision counts only if it is before tmax).
+/// whenever tmax < 1 (a collision counts only if it is before tmax). Findings
+/// (pipeline/outcome.hpp) in this list: volume_out_of_range is written by VolumeExclusionStage
+/// and read by VolumeRetryStage (retry on the scaled query only where stage 1's range limits
+/// stopped it); toi_cell is written by IntervalStage (a collision proved, its root cell isolated
+/// but not narrowed) and read by ToiInCellStage (narrows it). used_gmp and use are not used here:
+/// the integer stages count at their own counters, and the exact path takes the contact rule whole.
 template <class Query>
 std::optional<TimeInterval> through_contact_stages(const Query& q, const Question& asked, StageCounters* counters) {
   Work<Query> work{q, {asked.params, asked.want_toi || asked.params.tmax < 1}, counters};

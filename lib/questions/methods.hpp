@@ -13,6 +13,7 @@
 #include "exactccd/stats.hpp"
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/contact_probe.hpp"
 #include "pipeline/outcome.hpp"
 #include "pipeline/run_stages.hpp"
 #include "questions/contact_question.hpp"
@@ -70,32 +71,27 @@ struct ContactOfEmbeddingStage {
   }
 };
 
-/// The minimum-separation question, for the answer alone (no TOI asked): touching within
-/// [0, tmax] is being within d, and the contact stages decide most touching pairs far more
-/// cheaply than the separation walk. A collision is counted at the contact stage that found it
-/// (its TOI t0 bounds the earliest time within d from above: [0, hi] encloses it); otherwise
-/// nothing is counted, and GMP or CGAL use is handed over (used_gmp: the deciding stage then
-/// counts as `integer`; the fixed-width integer stage allocates nothing and does not count).
-struct ContactProbeStage {
-  static constexpr Counter counter = nullptr;  ///< counts for itself (above)
-  /// The probe, for the answer alone.
+/// The contact question of a query of any kind (contact_of_any_kind) for the minimum-separation
+/// question's contact probe (pipeline/contact_probe.hpp): it always decides, and hands over
+/// GMP use through the counters.
+struct ContactOfAnyKind {
+  /// The contact question's answer as an Outcome.
   template <class Query>
-  Outcome operator()(Work<Query>& work) const {
-    if (work.question.want_toi) return Outcome::undecided();
-    StageCounters probe;
-    const auto touch = contact_of_any_kind(work.query(), Question{{0.0, work.question.params.tmax}, false}, &probe);
-    if (touch) {
-      if (work.counters) *work.counters += probe;
-      return Outcome::collides(TimeInterval{0.0, touch->hi});
-    }
-    work.findings.used_gmp = probe.integer + probe.exact > 0;
-    return Outcome::undecided();
+  Outcome operator()(const Query& q, const Question& question, StageCounters* counters, pipeline::Findings&) const {
+    const auto toi = contact_of_any_kind(q, question, counters);
+    return toi ? Outcome::collides(toi) : Outcome::separate();
   }
 };
 
 /// A query of any kind by the filtered method (the question validated by the entry point):
 /// certified floating-point stages first, the exact path last, each query counted at the stage
-/// deciding it (in `counters`, may be null).
+/// deciding it (in `counters`, may be null). Findings (pipeline/outcome.hpp) in the
+/// minimum-separation list: used_gmp is written by the contact probe (GMP or CGAL in the contact
+/// question it asked) and by SeparationWalkStage (an exact sign in integers, the exact plane
+/// test), and read by SeparationWalkStage when it decides (counted `integer`); use is written by
+/// SeparationWalkStage (the feature pairs no direction keeps apart) and read by
+/// ExactSeparationStage (the exact path leaves the others out). The contact question's own
+/// findings are its list's (contact_question.cpp).
 template <class Query>
 std::optional<TimeInterval> filtered_method(const Query& q, const Question& question, StageCounters* counters) {
   if (question.params.min_distance == 0) {  // the contact question
@@ -108,10 +104,10 @@ std::optional<TimeInterval> filtered_method(const Query& q, const Question& ques
   }
   Work<Query> work{q, question, counters};  // the minimum-separation question
   return run_stages(work,
-                    separation::SeparatingDirectionStage{},  // a direction keeps them > d apart
-                    ContactProbeStage{},                     // answer alone: touching is within d
-                    separation::SeparationWalkStage{},       // the terms over time cells, intervals
-                    separation::ExactSeparationStage{});     // CGAL's algebraic kernel: always decides
+                    separation::SeparatingDirectionStage{},       // a direction keeps them > d apart
+                    pipeline::contact_probe(ContactOfAnyKind{}),  // answer alone: touching is within d
+                    separation::SeparationWalkStage{},            // the terms over time cells, intervals
+                    separation::ExactSeparationStage{});          // CGAL's algebraic kernel: always decides
 }
 
 /// A query of any kind by the exact method (GMP and CGAL throughout; not counted): the contact

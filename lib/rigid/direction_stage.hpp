@@ -52,12 +52,15 @@
 #include <cstddef>
 
 #include "exactccd/rigid.hpp"
+#include "exactccd/stats.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::rigid {
 
-/// The direction stage's view of a normalized query (rigid_unit_scaling.hpp): the body points rotated at
-/// t = 0 and 1, the translations relative to A's c(0), the sagitta terms (header, steps 1-4).
+/// The direction stage's view of a normalized query (rigid_unit_scaling.hpp): the body points
+/// rotated at t = 0 and 1, the translations relative to A's c(0), the sagitta terms (header,
+/// steps 1-4).
 template <class Query>
 class DirectionFrame {
  public:
@@ -89,5 +92,18 @@ class DirectionFrame {
 
 extern template class DirectionFrame<RigidVertexFaceQuery>;
 extern template class DirectionFrame<RigidEdgeEdgeQuery>;
+
+/// The first filtered stage of both rigid questions: separate when a direction certifies that
+/// the primitives stay farther than d apart over the whole step, else undecided.
+struct DirectionStage {
+  static constexpr pipeline::Counter counter = &StageCounters::separating_direction;  ///< counted as
+  /// The certificate on the Work's normalized query and scaled d.
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    return DirectionFrame<Query>(work.query()).separated_beyond(work.question.params.min_distance)
+               ? pipeline::Outcome::separate()
+               : pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::rigid

@@ -199,4 +199,22 @@ class IntervalFrame {
   mutable std::optional<SlopedPoly<4>> D_;
 };
 
+/// The interval frame of one normalized query, shared by the stages of its list that read it
+/// (the contact walk, the contact probe's, the separation walk: contact_walk.hpp,
+/// rigid_separation_walk.hpp): built once, on first use, so that splitting the walks into stages
+/// computes nothing twice.
+template <class Query>
+class SharedIntervalFrame {
+ public:
+  /// The frame of `normalized_query` (the same query at every call: the Work's after the unit
+  /// scaling stage), built under the caller's upward rounding on first use.
+  const IntervalFrame<Query>& of(const Query& normalized_query) {
+    if (!frame_) frame_.emplace(normalized_query);
+    return *frame_;
+  }
+
+ private:
+  std::optional<IntervalFrame<Query>> frame_;
+};
+
 }  // namespace exactccd::rigid

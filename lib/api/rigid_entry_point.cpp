@@ -1,13 +1,12 @@
 // The one entry point (exactccd/ccd.hpp's answer_query) for rigid queries (exactccd/rigid.hpp):
-// the floating-point environment, validation, then the method's stage list (rigid_filter.hpp)
-// or the exact path.
+// the floating-point environment, validation, then the method's stage list
+// (questions/rigid_methods.hpp).
 #include <string>
 
 #include "exactccd/rigid.hpp"
+#include "kinds/primitive_kinds.hpp"
 #include "numeric/fp_environment.hpp"
-#include "rigid/exact_rigid.hpp"
-#include "rigid/rigid_filter.hpp"
-#include "rigid/rigid_frame.hpp"
+#include "questions/rigid_methods.hpp"
 #include "rigid/validation.hpp"
 
 namespace exactccd {
@@ -23,11 +22,12 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& params, Meth
                                    StageCounters* counters) {
   const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
   rigid::validate(q, params, [&] { return function_name<Query>(want_toi); });
+  const pipeline::Question question{params, want_toi};
   switch (method) {
     case Method::filtered:
-      return rigid::filtered(q, params, want_toi, counters);
+      return questions::filtered_method(q, question, counters);
     case Method::exact:
-      return rigid::exact_toi(rigid::to_rational(q), RationalCcdParams{params.min_distance, params.tmax});
+      return questions::exact_method(q, question);
   }
   throw std::invalid_argument(function_name<Query>(want_toi) + ": unknown method " +
                               std::to_string(static_cast<int>(method)));
