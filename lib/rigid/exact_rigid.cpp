@@ -10,12 +10,13 @@
 // 3. Each is divided by the primitive parts of |qA|^2 and |qB|^2 (positive on [0, 1]) while
 //    they divide it exactly; then by its content. A positive factor changes no sign, so the
 //    result has the roots and signs of the true rational function on [0, 1].
-// 4. The procedures of exact_ccd.cpp (candidates: 0 and the roots of V in [0, tmax], or, when V
-//    vanishes identically, 0 and the roots of every in-plane polynomial) and of
-//    exact_separation.cpp (0 and the roots of the terms' f), whose proofs (docs/design.md, 3
-//    and 4b.2) use only that the rule is a Boolean formula over the signs of finitely many
-//    continuous functions whose zero sets are finite or everything, and that the contact set is
-//    closed: both hold for rational functions with a positive denominator.
+// 4. The one exact "earliest root where the rule holds" of the linear paths (exact/
+//    earliest_root.hpp: candidates the roots of V in [0, tmax], or, when V vanishes identically,
+//    0 and the roots of every in-plane polynomial; at d > 0, 0 and the roots of the terms' f),
+//    whose proofs (docs/design.md, 3 and 4b.2) use only that the rule is a Boolean formula over
+//    the signs of finitely many continuous functions whose zero sets are finite or everything,
+//    and that the contact set is closed: both hold for rational functions with a positive
+//    denominator.
 #include "rigid/exact_rigid.hpp"
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 
 #include "contact/contact_rule.hpp"
 #include "exact/algebraic_kernel.hpp"
+#include "exact/earliest_root.hpp"
 #include "exact/stack_budget.hpp"
 #include "rigid/rigid_frame.hpp"
 #include "contact/separation_terms.hpp"
@@ -169,32 +171,7 @@ class Reduced {
   std::size_t bits_ = 0;
 };
 
-int sign_at(const Kernel& kernel, const IntegerPoly& p, const Root& t) {
-  return CGAL::is_zero(p) ? 0 : static_cast<int>(kernel.sign_at_1_object()(p, t));
-}
-
 // --- 4. the contact rule (d = 0) ----------------------------------------------------------------
-
-template <class Terms>
-std::optional<Root> earliest_contact(const Kernel& kernel, const Terms& P, Reduced& reduced, const mpq_class& tmax) {
-  std::vector<Root> times;
-  const IntegerPoly& volume = reduced(P.volume());
-  if (!CGAL::is_zero(volume)) {
-    append_roots(kernel, volume, 0, tmax, times);  // sorted and distinct
-  } else {
-    times.push_back(rational_root(0));
-    contact::for_each_in_plane_poly(P, [&](const auto& p) {
-      const IntegerPoly& r = reduced(p);
-      if (!CGAL::is_zero(r)) append_roots(kernel, r, 0, tmax, times);
-    });
-    sort_unique(kernel, times);
-  }
-  for (const Root& t : times) {
-    const auto sign = [&](const auto& p) { return sign_at(kernel, reduced(p), t); };
-    if (contact::in_contact(P, sign) == contact::Truth::yes) return t;  // exact: never unknown
-  }
-  return std::nullopt;
-}
 
 template <class Query>
 std::optional<TimeInterval> contact_toi(const Query& q, const mpq_class& tmax) {
@@ -214,11 +191,6 @@ std::optional<TimeInterval> contact_toi(const Query& q, const mpq_class& tmax) {
 }
 
 // --- 4. the feature-pair terms (any d) ----------------------------------------------------------
-
-struct IntegerTerm {
-  IntegerPoly distance;
-  std::vector<IntegerPoly> positive;
-};
 
 /// Every feature pair's term on the scaled frame, reduced: f(t) D^k and g(t) D^k (with d D(t) in
 /// place of d: f is homogeneous in the lengths and d together).
@@ -248,21 +220,7 @@ std::optional<TimeInterval> separation_toi(const Query& q, const RationalCcdPara
   std::optional<TimeInterval> result;
   exact::run_with_stack_for_depth(reduced.depth_bound(), [&] {
     const Kernel kernel;
-    std::vector<Root> times{rational_root(0)};
-    for (const IntegerTerm& t : terms)
-      if (!CGAL::is_zero(t.distance)) append_roots(kernel, t.distance, 0, params.tmax, times);
-    sort_unique(kernel, times);
-    for (const Root& t : times) {
-      const bool holds = std::any_of(terms.begin(), terms.end(), [&](const IntegerTerm& term) {
-        return std::all_of(term.positive.begin(), term.positive.end(),
-                           [&](const IntegerPoly& g) { return sign_at(kernel, g, t) > 0; }) &&
-               sign_at(kernel, term.distance, t) <= 0;
-      });
-      if (holds) {
-        result = enclose(kernel, t);
-        return;
-      }
-    }
+    if (const std::optional<Root> t = earliest_term_time(kernel, terms, params.tmax)) result = enclose(kernel, *t);
   });
   return result;
 }
