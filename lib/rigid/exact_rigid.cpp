@@ -249,13 +249,6 @@ std::optional<TimeInterval> toi_of(const Query& q, const RationalCcdParams& para
   return separation_toi(q, params);
 }
 
-template <class T>
-RigidPoseT<mpq_class> rational(const RigidPoseT<T>& p) {
-  return {{mpq_class(p.c.x), mpq_class(p.c.y), mpq_class(p.c.z)},
-          {mpq_class(p.q.w), mpq_class(p.q.x), mpq_class(p.q.y), mpq_class(p.q.z)}};
-}
-RationalVec3 rational(const Vec3& v) { return {mpq_class(v.x), mpq_class(v.y), mpq_class(v.z)}; }
-
 }  // namespace
 
 std::optional<TimeInterval> exact_toi(const RationalRigidVertexFaceQuery& q, const RationalCcdParams& p) { return toi_of(q, p); }
@@ -268,14 +261,5 @@ std::optional<TimeInterval> exact_separation_toi(const RationalRigidEdgeEdgeQuer
 }
 ReducedDegrees reduced_degrees(const RationalRigidVertexFaceQuery& q, const mpq_class& d) { return degrees_of(q, d); }
 ReducedDegrees reduced_degrees(const RationalRigidEdgeEdgeQuery& q, const mpq_class& d) { return degrees_of(q, d); }
-
-RationalRigidVertexFaceQuery to_rational(const RigidVertexFaceQuery& q) {
-  return {rational(q.a_t0), rational(q.a_t1), rational(q.b_t0), rational(q.b_t1),
-          rational(q.p),    rational(q.a),    rational(q.b),    rational(q.c)};
-}
-RationalRigidEdgeEdgeQuery to_rational(const RigidEdgeEdgeQuery& q) {
-  return {rational(q.a_t0), rational(q.a_t1), rational(q.b_t0), rational(q.b_t1),
-          rational(q.a0),   rational(q.a1),   rational(q.b0),   rational(q.b1)};
-}
 
 }  // namespace exactccd::rigid

@@ -8,6 +8,7 @@
 
 #include <optional>
 
+#include "exact/rational_query.hpp"
 #include "exactccd/rational.hpp"
 #include "exactccd/rigid.hpp"
 #include "exactccd/stats.hpp"
@@ -45,17 +46,12 @@ ReducedDegrees reduced_degrees(const RationalRigidVertexFaceQuery& q, const mpq_
 /// See ReducedDegrees.
 ReducedDegrees reduced_degrees(const RationalRigidEdgeEdgeQuery& q, const mpq_class& d);
 
-/// The query with its double components as exact rationals.
-RationalRigidVertexFaceQuery to_rational(const RigidVertexFaceQuery& q);
-/// See to_rational(const RigidVertexFaceQuery&).
-RationalRigidEdgeEdgeQuery to_rational(const RigidEdgeEdgeQuery& q);
-
 /// The exact path's answer to the Work's question (on its query, normalized or not: the same
 /// answer) as an Outcome.
 template <class Query>
 pipeline::Outcome exact_outcome(const pipeline::Work<Query>& work) {
   const CcdParams& p = work.question.params;
-  const auto t = exact_toi(to_rational(work.query()), RationalCcdParams{p.min_distance, p.tmax});
+  const auto t = exact_toi(exact::to_rational(work.query()), RationalCcdParams{p.min_distance, p.tmax});
   return t ? pipeline::Outcome::collides(t) : pipeline::Outcome::separate();
 }
 
