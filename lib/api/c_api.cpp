@@ -1,13 +1,13 @@
-// The C API (exactccd/exactccd.h) over the C++ one. No exception crosses the boundary.
+// The C API (exactccd/exactccd.h) of the linear kinds over the C++ one, by the one pattern of
+// every C query function (c_query.hpp; rigid bodies: rigid_c_api.cpp). No exception crosses the
+// boundary.
 #include "exactccd/exactccd.h"
 
-#include <array>
 #include <cmath>
-#include <exception>
 #include <optional>
 
+#include "api/c_query.hpp"
 #include "exactccd/ccd.hpp"
-#include "numeric/fp_environment.hpp"
 #include "kinds/primitive_kinds.hpp"
 
 namespace {
@@ -31,24 +31,6 @@ std::optional<Query> read_any_query(const double* q) {
   return from_rows<Query>(r);
 }
 
-template <class Query, class Toi>
-exactccd_status toi_impl(const double* query, int* collides, double* lo, double* hi, Toi&& toi) {
-  if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const numeric::DefaultFpEnvironment fp_environment;  // as every C++ entry point
-  const std::optional<Query> q = read_any_query<Query>(query);
-  if (!q) return EXACTCCD_ERROR_NON_FINITE;
-  try {
-    const std::optional<TimeInterval> t = toi(*q);
-    *collides = t.has_value() ? 1 : 0;
-    if (t && lo) *lo = t->lo;
-    if (t && hi) *hi = t->hi;
-    return EXACTCCD_OK;
-  } catch (const std::exception&) {
-    return EXACTCCD_ERROR_INTERNAL;
-  }
-}
-
-
 /// Calls f(Kind{}) for the kind whose exactccd_kind value is `kind` (Kind::c_kind); false for an
 /// unknown value.
 template <class F>
@@ -63,32 +45,19 @@ bool visit_c_kind(int kind, F&& f) {
   return found;
 }
 
-exactccd_status separation_impl(int kind, const double* query, double d, double tmax, bool want_toi,
-                                int* collides, double* lo, double* hi) {
-  if (!query || !collides) return EXACTCCD_ERROR_NULL;
-  const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
-  if (!(std::isfinite(d) && d >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
-  exactccd_status status = EXACTCCD_ERROR_PARAMETER;
-  visit_c_kind(kind, [&](auto k) {
-    using Query = typename decltype(k)::template Query<double>;
-    const std::optional<Query> q = read_any_query<Query>(query);
-    if (!q) {
-      status = EXACTCCD_ERROR_NON_FINITE;
-      return;
-    }
-    try {
-      const CcdParams params{d, tmax};
-      const std::optional<TimeInterval> t =
-          want_toi ? toi(*q, params) : (ccd(*q, params) ? std::optional(TimeInterval{}) : std::nullopt);
-      *collides = t.has_value() ? 1 : 0;
-      if (t && lo) *lo = t->lo;
-      if (t && hi) *hi = t->hi;
-      status = EXACTCCD_OK;
-    } catch (const std::exception&) {
-      status = EXACTCCD_ERROR_INTERNAL;
-    }
+/// The C API's query of any kind (exactccd_kind value `kind`, its doubles in `query`): the calls
+/// of exactccd_ccd, exactccd_toi and the named functions (api/c_query.hpp).
+exactccd_status answer_c_query(int kind, const double* query, double d, double tmax, bool want_toi, int* collides,
+                               double* lo, double* hi) {
+  return api::c_query_call(query, collides, d, tmax, [&](const CcdParams& params) {
+    exactccd_status status = EXACTCCD_ERROR_PARAMETER;  // an unknown kind
+    visit_c_kind(kind, [&](auto k) {
+      using Query = typename decltype(k)::template Query<double>;
+      const std::optional<Query> q = read_any_query<Query>(query);
+      status = q ? api::write_answer(*q, params, want_toi, collides, lo, hi) : EXACTCCD_ERROR_NON_FINITE;
+    });
+    return status;
   });
-  return status;
 }
 
 }  // namespace
@@ -102,36 +71,30 @@ int exactccd_query_size(int kind) {
 }
 
 exactccd_status exactccd_ccd(int kind, const double* query, double min_distance, double tmax, int* collides) {
-  return separation_impl(kind, query, min_distance, tmax, false, collides, nullptr, nullptr);
+  return answer_c_query(kind, query, min_distance, tmax, false, collides, nullptr, nullptr);
 }
 
 exactccd_status exactccd_toi(int kind, const double* query, double min_distance, double tmax, int* collides,
                              double* lo, double* hi) {
-  return separation_impl(kind, query, min_distance, tmax, true, collides, lo, hi);
+  return answer_c_query(kind, query, min_distance, tmax, true, collides, lo, hi);
 }
 
 exactccd_status exactccd_vertex_face_ccd(const double query[24], int* collides) {
-  return toi_impl<VertexFaceQuery>(query, collides, nullptr, nullptr, [](const VertexFaceQuery& q) {
-    return vertex_face_ccd(q) ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt;
-  });
+  return answer_c_query(EXACTCCD_VERTEX_FACE, query, 0, 1, false, collides, nullptr, nullptr);
 }
 
 exactccd_status exactccd_edge_edge_ccd(const double query[24], int* collides) {
-  return toi_impl<EdgeEdgeQuery>(query, collides, nullptr, nullptr, [](const EdgeEdgeQuery& q) {
-    return edge_edge_ccd(q) ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt;
-  });
+  return answer_c_query(EXACTCCD_EDGE_EDGE, query, 0, 1, false, collides, nullptr, nullptr);
 }
 
 exactccd_status exactccd_vertex_face_toi(const double query[24], int* collides, double* lo,
                                          double* hi) {
-  return toi_impl<VertexFaceQuery>(query, collides, lo, hi,
-                                   [](const VertexFaceQuery& q) { return vertex_face_toi(q); });
+  return answer_c_query(EXACTCCD_VERTEX_FACE, query, 0, 1, true, collides, lo, hi);
 }
 
 exactccd_status exactccd_edge_edge_toi(const double query[24], int* collides, double* lo,
                                        double* hi) {
-  return toi_impl<EdgeEdgeQuery>(query, collides, lo, hi,
-                                 [](const EdgeEdgeQuery& q) { return edge_edge_toi(q); });
+  return answer_c_query(EXACTCCD_EDGE_EDGE, query, 0, 1, true, collides, lo, hi);
 }
 
 const char* exactccd_status_string(exactccd_status status) {

@@ -1,7 +1,9 @@
-// The one entry point of the library's queries (exactccd/ccd.hpp, exactccd/rational.hpp):
-// validation, the floating-point environment, then the method's stage lists
-// (pipeline/methods.hpp). Every public query function is a one-line call of answer_query or
-// answer_rational_query, which this file defines for every kind.
+// The one entry point of the library's queries (exactccd/ccd.hpp, exactccd/rational.hpp,
+// exactccd/rigid.hpp): the floating-point environment, validation, then the method's stage
+// lists (questions/methods.hpp, questions/rigid_methods.hpp). Every public query function is a
+// one-line call of answer_query or answer_rational_query, which this file defines for every
+// kind of both motion models, linear and rigid: one function, whose query check is the motion
+// model's (require_valid_query) and whose parameter check is the same for both.
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -12,23 +14,32 @@
 #include "exact/exact_ccd.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/rational.hpp"
+#include "exactccd/rigid.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "numeric/fp_environment.hpp"
-#include "pipeline/methods.hpp"
+#include "questions/methods.hpp"
+#include "questions/rigid_methods.hpp"
+#include "rigid/validation.hpp"
 #include "separation/exact_separation.hpp"
 
 namespace exactccd {
 namespace {
 
+/// True for the query types of the rigid motion model (exactccd/rigid.hpp).
+template <class Query>
+inline constexpr bool is_rigid = std::is_same_v<Query, RigidVertexFaceQuery> || std::is_same_v<Query, RigidEdgeEdgeQuery>;
+
 /// The public function a query of this type was asked through, for error messages.
 template <class Query>
 std::string function_name(bool want_toi) {
-  return "exactccd::" + std::string(kinds::kind_of<Query>::function) + (want_toi ? "_toi" : "_ccd");
+  const std::string motion = is_rigid<Query> ? "rigid_" : "";
+  return "exactccd::" + motion + std::string(kinds::kind_of<Query>::function) + (want_toi ? "_toi" : "_ccd");
 }
 
-/// Throws std::invalid_argument naming the function on a non-finite coordinate.
+/// Throws std::invalid_argument naming the function on a non-finite coordinate of a linear
+/// query.
 template <class Query>
-void require_finite(const Query& q, bool want_toi) {
+void require_valid_query(const Query& q, bool want_toi) {
   using Kind = kinds::kind_of<Query>;
   for (const auto& v : rows(q)) {
     bool finite = std::isfinite(v.x) && std::isfinite(v.y);
@@ -37,6 +48,18 @@ void require_finite(const Query& q, bool want_toi) {
       throw std::invalid_argument(function_name<Query>(want_toi) + ": non-finite coordinate (NaN or infinity) in the query");
   }
 }
+
+/// Throws std::invalid_argument naming the function on a rigid query that is bad input (a
+/// non-finite number, a quaternion path through 0: rigid/validation.hpp).
+template <class Query>
+void require_valid_rigid_query(const Query& q, bool want_toi) {
+  if (const std::optional<std::string> why = rigid::invalid_query(q))
+    throw std::invalid_argument(function_name<Query>(want_toi) + ": " + *why);
+}
+/// See require_valid_rigid_query.
+void require_valid_query(const RigidVertexFaceQuery& q, bool want_toi) { require_valid_rigid_query(q, want_toi); }
+/// See require_valid_rigid_query.
+void require_valid_query(const RigidEdgeEdgeQuery& q, bool want_toi) { require_valid_rigid_query(q, want_toi); }
 
 /// Throws std::invalid_argument naming the function on a d that is negative or not finite, a
 /// tmax outside (0, 1] or an unknown method value (numbers as they read back: number_text.hpp).
@@ -52,22 +75,42 @@ void require_valid(const CcdParams& p, Method method, bool want_toi) {
                                 std::to_string(static_cast<int>(method)));
 }
 
+/// answer_query for both motion models: the environment, the query's and the parameters'
+/// checks, the method's stage list.
+template <class Query>
+std::optional<TimeInterval> answer(const Query& q, const CcdParams& params, Method method, bool want_toi,
+                                   StageCounters* counters) {
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  require_valid_query(q, want_toi);
+  require_valid<Query>(params, method, want_toi);
+  const pipeline::Question question{params, want_toi};
+  if (method == Method::exact) return questions::exact_method(q, question);
+  return questions::filtered_method(q, question, counters);
+}
+
 }  // namespace
 
 template <class Query>
 std::optional<TimeInterval> answer_query(const Query& q, const CcdParams& params, Method method, bool want_toi,
                                          StageCounters* counters) {
-  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
-  require_finite(q, want_toi);
-  require_valid<Query>(params, method, want_toi);
-  const pipeline::Question question{params, want_toi};
-  if (method == Method::exact) return pipeline::exact_method(q, question);
-  return pipeline::filtered_method(q, question, counters);
+  return answer(q, params, method, want_toi, counters);
+}
+
+// The rigid query types' answer_query (explicit specializations declared by exactccd/rigid.hpp).
+template <>
+std::optional<TimeInterval> answer_query(const RigidVertexFaceQuery& q, const CcdParams& params, Method method,
+                                         bool want_toi, StageCounters* counters) {
+  return answer(q, params, method, want_toi, counters);
+}
+template <>
+std::optional<TimeInterval> answer_query(const RigidEdgeEdgeQuery& q, const CcdParams& params, Method method,
+                                         bool want_toi, StageCounters* counters) {
+  return answer(q, params, method, want_toi, counters);
 }
 
 template <class Query>
 std::optional<TimeInterval> answer_checked_query(const Query& q, const CcdParams& params, bool want_toi) {
-  return pipeline::filtered_method(q, pipeline::Question{params, want_toi}, nullptr);
+  return questions::filtered_method(q, pipeline::Question{params, want_toi}, nullptr);
 }
 
 template <class RationalQuery>

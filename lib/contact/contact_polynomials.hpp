@@ -6,7 +6,7 @@
 //   the exact paths, CGAL::Interval_nt in the interval filter, double in the naive baseline);
 //   every term is then a polynomial (VertexFacePolys<NT>, EdgeEdgePolys<NT>);
 // - a motion evaluated over one time interval T (the interval filter's MotionOver,
-//   filter/interval_values.hpp): every term is then an interval enclosing the polynomial's
+//   filter/interval/values.hpp): every term is then an interval enclosing the polynomial's
 //   values over T, from the same formulas, without building the polynomials.
 // Each term is built on first use and cached: the rule usually needs only a few of them
 // (a proper triangle never asks for its edges' segment tests), and on the exact paths every

@@ -15,11 +15,11 @@
 #include <utility>
 
 #include "contact/contact_polynomials.hpp"
+#include "numeric/interval.hpp"
 
 namespace exactccd::contact {
 
-/// The oracle's answer when a sign is not certain.
-constexpr int kUnknownSign = 2;
+using numeric::kUnknownSign;  ///< the oracle's answer when a sign is not certain
 
 /// A three-valued truth value.
 enum class Truth { no, yes, unknown };

@@ -18,8 +18,6 @@
 //   because q(r) != 0 and q is continuous.
 #include "filter/integer_stage.hpp"
 
-#include <CGAL/Interval_nt.h>
-
 #include <climits>
 #include <cmath>
 #include <deque>
@@ -32,6 +30,7 @@
 #include "exact/integer_poly.hpp"
 #include "filter/integer_query.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "numeric/interval.hpp"
 
 namespace exactccd::filter {
 namespace {
@@ -51,7 +50,7 @@ struct Candidate {
   const IntegerPolyT<Z>* defining = nullptr;  // unused when root.exact
 };
 
-using Interval = CGAL::Interval_nt<false>;  // only under Protect_FPU_rounding
+using numeric::Interval;  // only under Protect_FPU_rounding
 
 /// A polynomial of the rule seen twice: its interval version (from the double query, built
 /// up front) and a thunk building its exact integer version on first need. Most signs are

@@ -202,7 +202,7 @@ enum class Exclusion {
 /// in both runs the signs agree, and where it fails in the scaled run the answer there is
 /// out_of_range, never excluded. So a not_proven answer stays not_proven after scaling but for
 /// the subnormal cases. The filtered method therefore retries on the query scaled towards 1
-/// (filter/normalize.hpp, VolumeRetryStage) only after out_of_range; skipping a retry can only leave a query to the
+/// (filter/unit_scaling.hpp, VolumeRetryStage) only after out_of_range; skipping a retry can only leave a query to the
 /// later stages, which are sound for every input.
 inline Exclusion volume_exclusion(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, const Vec3& w0,
                                   const Vec3& w1) {

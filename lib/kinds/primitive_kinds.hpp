@@ -15,6 +15,7 @@
 
 #include "exactccd/exactccd.h"
 #include "exactccd/plugin.h"
+#include "exactccd/rigid.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::kinds {
@@ -44,6 +45,10 @@ inline constexpr FeatureMask kAllFeatures{true, true, true, true, true, true, tr
 struct VertexFace {
   template <class T>
   using Query = VertexFaceQueryT<T>;
+  /// The query of the rigid motion model (exactccd/rigid.hpp): the same points on two rigid
+  /// bodies, the first first_points of them on body A.
+  template <class T>
+  using RigidQuery = RigidVertexFaceQueryT<T>;
   static constexpr std::string_view name = "vertex-face";  ///< file names, tables, JSON
   static constexpr int c_kind = EXACTCCD_VERTEX_FACE;  ///< the C API's exactccd_kind
   static constexpr std::string_view short_name = "vf";     ///< the CLI's --kind value
@@ -72,6 +77,8 @@ struct VertexFace {
 struct EdgeEdge {
   template <class T>
   using Query = EdgeEdgeQueryT<T>;
+  template <class T>
+  using RigidQuery = RigidEdgeEdgeQueryT<T>;  ///< the rigid motion model's query
   static constexpr std::string_view name = "edge-edge";
   static constexpr int c_kind = EXACTCCD_EDGE_EDGE;
   static constexpr std::string_view short_name = "ee";
@@ -195,7 +202,8 @@ struct PointPoint2d {
   static constexpr std::array<int, 4> contact_points{0, 0, 1, 1};
 };
 
-/// The kind of a query type (double, rational, interval or integer coordinates alike).
+/// The kind of a query type (double, rational, interval or integer coordinates alike; linear
+/// or rigid motion).
 template <class Query>
 struct KindOf;
 template <class T>
@@ -226,6 +234,14 @@ template <class T>
 struct KindOf<PointPoint2dQueryT<T>> {
   using type = PointPoint2d;
 };
+template <class T>
+struct KindOf<RigidVertexFaceQueryT<T>> {
+  using type = VertexFace;
+};
+template <class T>
+struct KindOf<RigidEdgeEdgeQueryT<T>> {
+  using type = EdgeEdge;
+};
 /// The kind of a query type.
 template <class Query>
 using kind_of = typename KindOf<std::decay_t<Query>>::type;
@@ -246,7 +262,7 @@ constexpr void for_each_kind(F&& f) {
 
 /// True for the kinds with a contact rule and volume filter of their own (lib/contact,
 /// lib/filter): those whose description has volume_rows (vertex-face and edge-edge). The
-/// others' contact question is the edge-edge one of the same points (pipeline/methods.hpp).
+/// others' contact question is the edge-edge one of the same points (questions/methods.hpp).
 template <class Kind, class = void>
 struct HasContactStages : std::false_type {};
 template <class Kind>

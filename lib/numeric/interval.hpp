@@ -1,6 +1,7 @@
-// Interval arithmetic in doubles (CGAL::Interval_nt<false>) and what both interval stages (the
-// contact stage, filter/interval_stage.cpp; the separation walk, separation/separation_walk.cpp)
-// ask of an interval: its certain sign, its sign class, the next double of a cell.
+// Interval arithmetic in doubles (CGAL::Interval_nt<false>) and what the interval stages (the
+// contact stage, filter/interval_stage.cpp; the separation walk, separation/separation_walk.cpp;
+// the rigid walks, rigid/) ask of an interval: its certain sign, its sign class, the sign it
+// certifies for the contact rule's oracles, the next double of a cell.
 //
 // Soundness rests on the inclusion property: every interval computed contains the exact real
 // value of the quantity it stands for. Interval_nt<false> needs the rounding towards
@@ -35,6 +36,27 @@ inline SignClass classify(const Interval& x) {
   if (x.sup() < 0) return SignClass::negative;
   if (x.inf() == 0 && x.sup() == 0) return SignClass::zero;
   return SignClass::unknown;
+}
+
+/// The sign an oracle of the contact rule (contact/contact_rule.hpp) gives when it cannot
+/// certify one: neither -1, 0 nor 1.
+inline constexpr int kUnknownSign = 2;
+
+/// The sign of the value that x encloses, where x certifies it: 1 or -1 when x excludes 0, 0
+/// when x is exactly [0, 0] (it encloses only 0), otherwise kUnknownSign. The one interval sign
+/// test of the filters' sign oracles, linear and rigid.
+inline int interval_sign(const Interval& x) {
+  switch (classify(x)) {
+    case SignClass::positive:
+      return 1;
+    case SignClass::negative:
+      return -1;
+    case SignClass::zero:
+      return 0;
+    case SignClass::unknown:
+      break;
+  }
+  return kUnknownSign;
 }
 
 /// The sign class of an exact sign (-1, 0, 1).

@@ -1,7 +1,8 @@
 // The power of two that brings a magnitude into [1, 2), as factors that are normal doubles:
-// shared by the filters that scale a query before evaluating it (normalize.hpp,
-// separation/distance_sign.hpp, separation/separating_direction.hpp). Multiplying by a power of
-// two is exact unless the result leaves the normal range, which each caller handles.
+// shared by the filters that scale a query before evaluating it (filter/unit_scaling.hpp,
+// rigid/rigid_unit_scaling.hpp, separation/distance_sign.hpp,
+// separation/separating_direction.hpp). Multiplying by a power of two is exact unless the result
+// leaves the normal range, which each caller handles.
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,7 @@
-// The one narrowing of a root to adjacent doubles, for both questions: the contact TOI (a root
-// of the volume V, filter/toi_narrowing.cpp) and the minimum-separation TOI (a root of a
-// feature pair's distance f, separation/separation_walk.cpp).
+// The one narrowing of a root to adjacent doubles, for both questions and both motion models:
+// the contact TOI (a root of the volume V, filter/toi_narrowing.cpp; rigid/contact_walk.cpp, and
+// of an orientation, rigid/coplanar_walk.cpp) and the minimum-separation TOI (a root of a feature
+// pair's distance f, separation/separation_walk.cpp, rigid/rigid_separation_walk.cpp).
 //
 // Given a cell (lo, hi) of doubles holding exactly one root t* of f, with f's sign at lo known
 // and nonzero (the opposite at hi), each step examines one double m strictly inside the cell,

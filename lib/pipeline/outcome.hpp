@@ -6,7 +6,7 @@
 // decided (the primitives collide, with the TOI when the stage certified it, or they stay
 // apart), or undecided; what it learned on the way (a root cell, the feature pairs proven
 // apart, ...) it leaves in the Work's findings for the stages after it. run_stages.hpp is the
-// whole policy; pipeline/filtered_method.cpp holds the stage list of each question.
+// whole policy; the stage lists of each question are in lib/questions/.
 #pragma once
 
 #include <cstdint>
@@ -49,6 +49,15 @@ struct Outcome {
   static Outcome collides(std::optional<TimeInterval> toi = std::nullopt) { return {Answer::collides, toi, nullptr}; }
 };
 
+/// The TOI restricted to [0, tmax]: the exact time t lies in [lo, hi] (lo == hi, or lo < t < hi
+/// with no double between them), so for a double tmax, t <= tmax iff hi <= tmax (or lo <= tmax
+/// when lo == hi == t).
+inline std::optional<TimeInterval> cut(const std::optional<TimeInterval>& t, double tmax) {
+  if (!t) return t;
+  const bool within = t->lo == t->hi ? t->lo <= tmax : t->hi <= tmax;
+  return within ? t : std::nullopt;
+}
+
 /// A dyadic cell [lo, hi] of [0, 1] holding exactly one root of the contact volume V, a simple
 /// one, with V's (nonzero) sign at lo (the opposite at hi).
 struct VolumeRootCell {
@@ -56,7 +65,8 @@ struct VolumeRootCell {
   int sign_at_lo = 0;
 };
 
-/// What the stages learned about a query and hand over to the later ones.
+/// What the stages learned about a query and hand over to the later ones. Each stage list
+/// (lib/questions/) says at its list which stage writes a field and which reads it.
 struct Findings {
   /// Contact: the TOI is V's simple root in this cell (the interval stage proved the collision
   /// and isolated the root, but did not narrow it to adjacent doubles).
@@ -68,9 +78,16 @@ struct Findings {
   /// than d apart over [0, 1] holds nowhere; the exact path leaves it out).
   kinds::FeatureMask use = kinds::kAllFeatures;
   /// GMP or CGAL was used on the way (an exact sign, the contact probe's integer stage): the
-  /// deciding stage counts as `integer`.
+  /// deciding stage counts as `integer` (counted_with_gmp).
   bool used_gmp = false;
 };
+
+/// The outcome `o` of a stage that counts as `integer` when GMP or CGAL was used on the way
+/// (findings.used_gmp, by it or an earlier stage), else at its own counter.
+inline Outcome counted_with_gmp(Outcome o, const Findings& findings) {
+  if (findings.used_gmp) o.counted_as = &StageCounters::integer;
+  return o;
+}
 
 /// A query on its way through the stages.
 template <class Query>

@@ -36,6 +36,9 @@ class StageRun {
     return false;
   }
 
+  /// True when a stage answered the question.
+  bool done() const { return done_; }
+
   /// The answer: the TOI (or kCollisionWithoutToi), nullopt for no collision.
   std::optional<TimeInterval> result() const {
     if (!done_) throw std::logic_error("exactccd: no stage decided the query");  // the last stage always decides
@@ -64,6 +67,18 @@ std::optional<TimeInterval> run_stages(Work<Query>& work, const Stage&... stage)
   StageRun run;
   (run.take(stage(work), Stage::counter, work) || ...);
   return run.result();
+}
+
+/// Runs the stages of a nested list (one whose last stage may leave the query undecided: the
+/// contact probe's, contact_probe.hpp) as run_stages, and returns the answer as an Outcome:
+/// collides with the TOI (or kCollisionWithoutToi), separate, or undecided when no stage answered.
+template <class Query, class... Stage>
+Outcome run_nested_stages(Work<Query>& work, const Stage&... stage) {
+  StageRun run;
+  (run.take(stage(work), Stage::counter, work) || ...);
+  if (!run.done()) return Outcome::undecided();
+  const std::optional<TimeInterval> answer = run.result();
+  return answer ? Outcome::collides(answer) : Outcome::separate();
 }
 
 }  // namespace exactccd::pipeline

@@ -1,39 +1,28 @@
 #include "rigid/contact_walk.hpp"
 
-#include <cmath>
-#include <limits>
 #include <optional>
 
 #include "contact/contact_rule.hpp"
+#include "numeric/root_narrowing.hpp"
 #include "rigid/interval_frame.hpp"
-#include "rigid/isolation.hpp"
+#include "rigid/isolation_limits.hpp"
 #include "rigid/positions.hpp"
 #include "rigid/sign_at.hpp"
 
 namespace exactccd::rigid {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// The sign oracle over a cell: certain interval signs, an exact [0, 0] as 0, else unknown.
-int oracle_sign(const Interval& x) {
-  if (x.inf() > 0) return 1;
-  if (x.sup() < 0) return -1;
-  if (x.inf() == 0 && x.sup() == 0) return 0;
-  return contact::kUnknownSign;
-}
+using pipeline::Outcome;
 
 template <class Query>
 class ContactWalk {
  public:
-  ContactWalk(const Query& q, const IntervalFrame<Query>& frame) : q_(q), frame_(frame) {}
+  ContactWalk(const Query& q, const IntervalFrame<Query>& frame, bool& used_gmp)
+      : q_(q), frame_(frame), used_gmp_(used_gmp) {}
 
   /// V's exact sign at the double t (an interval, else double-double or GMP).
   int sign_at(double t) {
-    const Interval v = frame_.volume().at(t);
-    if (v.inf() > 0) return 1;
-    if (v.sup() < 0) return -1;
-    if (v.inf() == 0 && v.sup() == 0) return 0;
+    if (const int s = numeric::interval_sign(frame_.volume().at(t)); s != contact::kUnknownSign) return s;
     const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);  // double-double needs it
     return volume_sign_at(q_, t, used_gmp_);
   }
@@ -43,7 +32,7 @@ class ContactWalk {
     for (int attempt = 0;; ++attempt) {
       const auto boxes = cell.lo == cell.hi ? frame_.at(cell.lo) : frame_.boxes(cell.lo, cell.hi);
       const auto terms = value_terms<Query>(boxes);
-      const contact::Truth t = contact::in_plane_contact(terms, [](const Interval& x) { return oracle_sign(x); });
+      const contact::Truth t = contact::in_plane_contact(terms, [](const Interval& x) { return numeric::interval_sign(x); });
       if (t != contact::Truth::unknown || cell.lo == cell.hi || attempt == 24) return t;
       const double mid = cell.lo + (cell.hi - cell.lo) / 2;
       if (!(cell.lo < mid && mid < cell.hi)) return t;
@@ -55,60 +44,49 @@ class ContactWalk {
     }
   }
 
-  /// The tightest double interval around the root in `cell` (exact signs at doubles).
-  TimeInterval tightest(RootCell cell) {
-    while (cell.lo < cell.hi && std::nextafter(cell.lo, kInf) < cell.hi) {
-      double mid = cell.lo + (cell.hi - cell.lo) / 2;
-      if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, kInf);
-      const int s = sign_at(mid);
-      if (s == 0) return {mid, mid};
-      (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
-    }
-    return {cell.lo, cell.hi};
+  /// The tightest double interval around the root in `cell` (V's exact signs at doubles, the
+  /// one narrowing: numeric/root_narrowing.hpp, by halving).
+  TimeInterval tightest(const RootCell& cell) {
+    numeric::Bisection halving;
+    const auto sign = [&](double t) { return numeric::SignAt{sign_at(t)}; };
+    return numeric::tightest_enclosure(cell.lo, cell.hi, cell.sign_at_lo, cell.lo, sign, halving);
   }
-
-  bool used_gmp() const { return used_gmp_; }
 
  private:
   const Query& q_;
   const IntervalFrame<Query>& frame_;
-  bool used_gmp_ = false;
+  bool& used_gmp_;
 };
 
-/// The TOI restricted to [0, tmax] (the tightest enclosure [lo, hi] of t: t <= tmax iff lo <= tmax
-/// when lo == hi, else hi <= tmax).
-bool within(const TimeInterval& t, double tmax) { return t.lo == t.hi ? t.lo <= tmax : t.hi <= tmax; }
-
 template <class Query>
-StageResult walk(const Query& q, const IntervalFrame<Query>& frame, double tmax, bool want_toi) {
+Outcome walk(const Query& q, const IntervalFrame<Query>& frame, double tmax, bool want_toi, bool& used_gmp) {
   const bool narrow = want_toi || tmax < 1;
-  ContactWalk<Query> w(q, frame);
+  ContactWalk<Query> w(q, frame, used_gmp);
   RootCells cells;  // V's roots, the exact sign of V at an end where its interval is uncertain
   const auto exact_sign_at_end = [&](int end) { return sign_class(w.sign_at(end == 0 ? 0.0 : 1.0)); };
   if (numeric::isolate_roots<5>(frame.volume().p.c, cells, true, kIsolationLimits, exact_sign_at_end) == Isolation::failed)
-    return StageResult::undecided(w.used_gmp());
+    return Outcome::undecided();
   for (RootCell cell : cells) {
     if (cell.lo > tmax) break;  // later roots are later still
     const contact::Truth t = w.rule_at_root(cell);
-    if (t == contact::Truth::unknown) return StageResult::undecided(w.used_gmp());
+    if (t == contact::Truth::unknown) return Outcome::undecided();
     if (t == contact::Truth::no) continue;
-    if (!narrow) return StageResult::collides({cell.lo, cell.hi}, w.used_gmp());
-    const TimeInterval toi = w.tightest(cell);
-    if (!within(toi, tmax)) return StageResult::separate(w.used_gmp());
-    return StageResult::collides(toi, w.used_gmp());
+    if (!narrow) return Outcome::collides(TimeInterval{cell.lo, cell.hi});
+    const std::optional<TimeInterval> toi = pipeline::cut(w.tightest(cell), tmax);
+    return toi ? Outcome::collides(toi) : Outcome::separate();
   }
-  return StageResult::separate(w.used_gmp());
+  return Outcome::separate();
 }
 
 }  // namespace
 
-StageResult contact_walk(const RigidVertexFaceQuery& q, const IntervalFrame<RigidVertexFaceQuery>& frame, double tmax,
-                         bool want_toi) {
-  return walk(q, frame, tmax, want_toi);
+Outcome contact_walk(const RigidVertexFaceQuery& q, const IntervalFrame<RigidVertexFaceQuery>& frame, double tmax,
+                     bool want_toi, bool& used_gmp) {
+  return walk(q, frame, tmax, want_toi, used_gmp);
 }
-StageResult contact_walk(const RigidEdgeEdgeQuery& q, const IntervalFrame<RigidEdgeEdgeQuery>& frame, double tmax,
-                         bool want_toi) {
-  return walk(q, frame, tmax, want_toi);
+Outcome contact_walk(const RigidEdgeEdgeQuery& q, const IntervalFrame<RigidEdgeEdgeQuery>& frame, double tmax,
+                     bool want_toi, bool& used_gmp) {
+  return walk(q, frame, tmax, want_toi, used_gmp);
 }
 
 }  // namespace exactccd::rigid

@@ -1,5 +1,5 @@
 // The interval stage of the rigid contact question (d = 0; docs/design.md, 9.4). On the
-// normalized query (normalized.hpp), in interval arithmetic (interval_frame.hpp):
+// normalized query (rigid_unit_scaling.hpp), in interval arithmetic (interval_frame.hpp):
 //  1. the volume polynomial V (degree 5, V's sign on [0, 1]) in the Bernstein basis; where its
 //     value at t = 0 or 1 is uncertain, its exact sign there (sign_at.hpp);
 //  2. its roots in [0, 1] isolated by Descartes' rule (numeric/bernstein_isolation.hpp): cells
@@ -13,23 +13,42 @@
 //     midpoint while the rule is uncertain (up to 24 times);
 //  4. the first root where it certainly holds is the TOI, every earlier one certainly failing;
 //     it is narrowed to adjacent doubles by V's exact signs at doubles (intervals, else
-//     double-double, else GMP: sign_at.hpp). No root where it holds (or none up to tmax): no
-//     collision. Anything uncertain: undecided.
+//     double-double, else GMP: sign_at.hpp; numeric/root_narrowing.hpp). No root where it holds
+//     (or none up to tmax): no collision. Anything uncertain: undecided.
 #pragma once
 
 #include "exactccd/rigid.hpp"
+#include "exactccd/stats.hpp"
+#include "pipeline/outcome.hpp"
 #include "rigid/interval_frame.hpp"
-#include "rigid/stage_result.hpp"
 
 namespace exactccd::rigid {
 
-/// The stage on a normalized query for [0, tmax], with its interval frame (built on the same
+/// The walk on a normalized query for [0, tmax], with its interval frame (built on the same
 /// query). Needs upward rounding (CGAL::Protect_FPU_rounding<true>) held by the caller. Without
-/// want_toi and with tmax = 1, a collision's TOI is any enclosure of the earliest time.
-StageResult contact_walk(const RigidVertexFaceQuery& normalized_query, const IntervalFrame<RigidVertexFaceQuery>& frame,
-                         double tmax, bool want_toi);
-/// See contact_walk(const RigidVertexFaceQuery&, const IntervalFrame<RigidVertexFaceQuery>&, double, bool).
-StageResult contact_walk(const RigidEdgeEdgeQuery& normalized_query, const IntervalFrame<RigidEdgeEdgeQuery>& frame,
-                         double tmax, bool want_toi);
+/// want_toi and with tmax = 1, a collision's TOI is any enclosure of the earliest time. Sets
+/// `used_gmp` when an exact sign needed GMP (never clears it).
+pipeline::Outcome contact_walk(const RigidVertexFaceQuery& normalized_query,
+                               const IntervalFrame<RigidVertexFaceQuery>& frame, double tmax, bool want_toi,
+                               bool& used_gmp);
+/// See contact_walk(const RigidVertexFaceQuery&, const IntervalFrame<RigidVertexFaceQuery>&, double, bool, bool&).
+pipeline::Outcome contact_walk(const RigidEdgeEdgeQuery& normalized_query, const IntervalFrame<RigidEdgeEdgeQuery>& frame,
+                               double tmax, bool want_toi, bool& used_gmp);
+
+/// The walk in the rigid contact question's stage list (and the contact probe's), on the Work's
+/// normalized query and the interval frame it shares with the later stages. Counted as
+/// `interval`, or `integer` when GMP was used (findings.used_gmp, which it sets).
+template <class Query>
+struct ContactWalkStage {
+  static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
+  SharedIntervalFrame<Query>* frame;  ///< the query's interval frame, shared with later stages
+  /// The walk over [0, tmax].
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    const CGAL::Protect_FPU_rounding<true> upward;  // the walk switches back where it needs
+    const pipeline::Outcome o = contact_walk(work.query(), frame->of(work.query()), work.question.params.tmax,
+                                             work.question.want_toi, work.findings.used_gmp);
+    return pipeline::counted_with_gmp(o, work.findings);
+  }
+};
 
 }  // namespace exactccd::rigid

@@ -4,21 +4,23 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
+#include <optional>
 
 #include "contact/contact_rule.hpp"
-#include "filter/interval/isolation.hpp"  // IntervalSignOracle
-#include "rigid/isolation.hpp"
+#include "contact/interval_oracle.hpp"
+#include "numeric/root_narrowing.hpp"
+#include "rigid/isolation_limits.hpp"
 #include "rigid/rigid_frame.hpp"
 #include "rigid/sign_at.hpp"
 
 namespace exactccd::rigid {
 namespace {
 
-using I = CGAL::Interval_nt<false>;
+using I = numeric::Interval;
+using pipeline::Outcome;
 using IQuery = RigidEdgeEdgeQueryT<I>;
 using Orientation = contact::Poly<I, 10>;
-using filter::interval::exactly_zero;
+using contact::exactly_zero;
 
 IQuery to_intervals(const RigidEdgeEdgeQuery& q) {
   const auto pose = [](const RigidPose& p) {
@@ -51,18 +53,15 @@ struct Candidate {
 };
 
 /// The tightest double cell around the candidate's root: its orientation's exact signs at
-/// doubles (sign_at.hpp, in round-to-nearest), as contact_walk.cpp's narrowing of V's roots.
+/// doubles (sign_at.hpp, in round-to-nearest), by the one narrowing (numeric/root_narrowing.hpp),
+/// as contact_walk.cpp's narrowing of V's roots.
 RootCell tightest(const RigidEdgeEdgeQuery& q, const Candidate& candidate, int axis, bool& used_gmp) {
-  RootCell cell = candidate.cell;
+  const RootCell& cell = candidate.cell;
   const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
-  while (cell.lo < cell.hi && std::nextafter(cell.lo, 2.0) < cell.hi) {
-    double mid = cell.lo + (cell.hi - cell.lo) / 2;
-    if (!(cell.lo < mid && mid < cell.hi)) mid = std::nextafter(cell.lo, 2.0);
-    const int s = orientation_sign_at(q, candidate.endpoint, axis, mid, used_gmp);
-    if (s == 0) return {mid, mid, 0};
-    (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
-  }
-  return cell;
+  numeric::Bisection halving;
+  const auto sign = [&](double t) { return numeric::SignAt{orientation_sign_at(q, candidate.endpoint, axis, t, used_gmp)}; };
+  const TimeInterval t = numeric::tightest_enclosure(cell.lo, cell.hi, cell.sign_at_lo, cell.lo, sign, halving);
+  return {t.lo, t.hi, t.lo == t.hi ? 0 : cell.sign_at_lo};
 }
 
 /// The rule at the root of `o` in `cell` (o counted as zero there), the cell halved by o's
@@ -70,28 +69,27 @@ RootCell tightest(const RigidEdgeEdgeQuery& q, const Candidate& candidate, int a
 template <class Terms>
 contact::Truth rule_at_root(const Terms& P, const Orientation* o, RootCell& cell) {
   for (int attempt = 0;; ++attempt) {
-    const filter::interval::IntervalSignOracle oracle{I(cell.lo, cell.hi), o};
+    const contact::IntervalSignOracle oracle{I(cell.lo, cell.hi), o};
     const contact::Truth t = contact::in_plane_contact(P, oracle);
     if (t != contact::Truth::unknown || o == nullptr || cell.lo == cell.hi || attempt == 40) return t;
     const double mid = cell.lo + (cell.hi - cell.lo) / 2;
     if (!(cell.lo < mid && mid < cell.hi)) return t;
-    const I v = (*o)(I(mid));
-    if (v.inf() == 0 && v.sup() == 0)
+    const int s = numeric::interval_sign((*o)(I(mid)));
+    if (s == contact::kUnknownSign) return t;
+    if (s == 0)
       cell = {mid, mid, 0};  // an exact zero: the root itself
-    else if (v.inf() > 0 || v.sup() < 0)
-      ((v.inf() > 0 ? 1 : -1) == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
     else
-      return t;
+      (s == cell.sign_at_lo ? cell.lo : cell.hi) = mid;
   }
 }
 
 }  // namespace
 
-StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_toi) {
+Outcome coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_toi, bool& used_gmp) {
   const IQuery iq = to_intervals(q);
   const ScaledFrame<I> frame = scaled_frame(iq);
   const int k = plane_axis(frame);
-  if (k < 0) return StageResult::undecided();
+  if (k < 0) return Outcome::undecided();
   const auto P = contact_terms<IQuery>(frame);
   boost::container::small_vector<Candidate, 16> candidates;
   RootCell start{0.0, 0.0, 0};
@@ -102,7 +100,7 @@ StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_to
     RootCells cells;
     const auto no_exact_sign = [](int) { return SignClass::unknown; };
     if (numeric::isolate_roots<10>(o.c, cells, true, kIsolationLimits, no_exact_sign) == Isolation::failed)
-      return StageResult::undecided();
+      return Outcome::undecided();
     for (RootCell cell : cells) {
       if (cell.lo > tmax) break;  // later roots are later still
       const contact::Truth t = rule_at_root(P, &o, cell);
@@ -117,13 +115,12 @@ StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_to
     if (c.truth == contact::Truth::yes && c.cell.hi <= tmax && (!contact_at || c.cell.lo < contact_at->cell.lo))
       contact_at = &c;
   }
-  if (all_no) return StageResult::separate();  // the claim: no candidate, no contact
-  if (!want_toi && contact_at) return StageResult::collides({0.0, contact_at->cell.hi});  // holds the earliest time
+  if (all_no) return Outcome::separate();  // the claim: no candidate, no contact
+  if (!want_toi && contact_at) return Outcome::collides(TimeInterval{0.0, contact_at->cell.hi});  // holds the earliest time
   // The earliest contact: each candidate not certainly out of contact narrowed to the tightest
   // double interval around its root (its orientation's exact signs); the one certainly in
   // contact that starts first, when every other such candidate starts at or after its end (its
   // root is then no earlier).
-  bool used_gmp = false;
   boost::container::small_vector<Candidate, 16> open;
   for (const Candidate& c : candidates) {
     if (c.truth == contact::Truth::no) continue;
@@ -133,12 +130,11 @@ StageResult coplanar_walk(const RigidEdgeEdgeQuery& q, double tmax, bool want_to
   const Candidate* first = nullptr;
   for (const Candidate& c : open)
     if (c.truth == contact::Truth::yes && (!first || c.cell.lo < first->cell.lo)) first = &c;
-  if (!first) return StageResult::undecided(used_gmp);
+  if (!first) return Outcome::undecided();
   for (const Candidate& c : open)
-    if (&c != first && c.cell.lo < first->cell.hi) return StageResult::undecided(used_gmp);
-  const TimeInterval toi{first->cell.lo, first->cell.hi};
-  if (toi.lo == toi.hi ? toi.lo > tmax : toi.hi > tmax) return StageResult::separate(used_gmp);
-  return StageResult::collides(toi, used_gmp);
+    if (&c != first && c.cell.lo < first->cell.hi) return Outcome::undecided();
+  const std::optional<TimeInterval> toi = pipeline::cut(TimeInterval{first->cell.lo, first->cell.hi}, tmax);
+  return toi ? Outcome::collides(toi) : Outcome::separate();
 }
 
 }  // namespace exactccd::rigid

@@ -52,7 +52,7 @@ double cosine_of_half_angle(const Quaternion& a, const Quaternion& b) {
 
 template <class Query>
 DirectionFrame<Query>::DirectionFrame(const Query& q) {
-  constexpr int first = kind_of<Query>::first_points;
+  constexpr int first = kinds::kind_of<Query>::first_points;
   const auto points = body_points(q);
   const Rotation ra[2] = {Rotation(q.a_t0.q), Rotation(q.a_t1.q)}, rb[2] = {Rotation(q.b_t0.q), Rotation(q.b_t1.q)};
   for (int t = 0; t < 2; ++t)
@@ -71,7 +71,7 @@ DirectionFrame<Query>::DirectionFrame(const Query& q) {
 
 template <class Query>
 bool DirectionFrame<Query>::certifies(const Vec3& n, unsigned used, double distance) const {
-  constexpr int first = kind_of<Query>::first_points;
+  constexpr int first = kinds::kind_of<Query>::first_points;
   // The projections of the translations and of the rotated points, bounded separately (header).
   const auto project = [&](const Vec3& v) { return (n.x * v.x + n.y * v.y) + n.z * v.z; };
   const double ta0 = project(translation_a_[0]), ta1 = project(translation_a_[1]);
@@ -120,7 +120,7 @@ std::optional<Vec3> natural_direction(const kinds::Feature& f, const std::array<
 template <class Query>
 bool DirectionFrame<Query>::separated(double d, unsigned used, const kinds::Feature* features,
                                       std::size_t feature_count) const {
-  constexpr int first = kind_of<Query>::first_points;
+  constexpr int first = kinds::kind_of<Query>::first_points;
   if (!std::isfinite(extent_y_)) return false;
   double extent_a = 0, extent_b = 0;
   for (int i = 0; i < 4; ++i)
@@ -155,13 +155,13 @@ unsigned points_of(const kinds::Feature& f) {
 
 template <class Query>
 bool DirectionFrame<Query>::separated_beyond(double d) const {
-  using Kind = kind_of<Query>;
+  using Kind = kinds::kind_of<Query>;
   return separated(d, 0xFu, Kind::features.data(), Kind::features.size());
 }
 
 template <class Query>
 bool DirectionFrame<Query>::feature_separated(double d, std::size_t feature) const {
-  const kinds::Feature& f = kind_of<Query>::features[feature];
+  const kinds::Feature& f = kinds::kind_of<Query>::features[feature];
   return separated(d, points_of(f), &f, 1);
 }
 

@@ -16,7 +16,7 @@
 // apart at every t in [0, 1] (Cauchy-Schwarz), likewise with A and B exchanged.
 //
 // How it is certified (u = 2^-53; round to nearest, the entry points' environment).
-//  1. Scaling (normalized.hpp): every length below 2 in magnitude, the largest in [1, 2); every
+//  1. Scaling (rigid_unit_scaling.hpp): every length below 2 in magnitude, the largest in [1, 2); every
 //     quaternion component below 2, the largest of each body in [1, 2), so |q|^2 in [1, 16).
 //  2. Rotations: the entries of M(q) are computed with an error below gamma_4 |q|^2 (diagonal:
 //     four squares and three sums; off-diagonal: two products, a difference, a doubling) and
@@ -52,12 +52,15 @@
 #include <cstddef>
 
 #include "exactccd/rigid.hpp"
+#include "exactccd/stats.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::rigid {
 
-/// The direction stage's view of a normalized query (normalized.hpp): the body points rotated at
-/// t = 0 and 1, the translations relative to A's c(0), the sagitta terms (header, steps 1-4).
+/// The direction stage's view of a normalized query (rigid_unit_scaling.hpp): the body points
+/// rotated at t = 0 and 1, the translations relative to A's c(0), the sagitta terms (header,
+/// steps 1-4).
 template <class Query>
 class DirectionFrame {
  public:
@@ -89,5 +92,18 @@ class DirectionFrame {
 
 extern template class DirectionFrame<RigidVertexFaceQuery>;
 extern template class DirectionFrame<RigidEdgeEdgeQuery>;
+
+/// The first filtered stage of both rigid questions: separate when a direction certifies that
+/// the primitives stay farther than d apart over the whole step, else undecided.
+struct DirectionStage {
+  static constexpr pipeline::Counter counter = &StageCounters::separating_direction;  ///< counted as
+  /// The certificate on the Work's normalized query and scaled d.
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    return DirectionFrame<Query>(work.query()).separated_beyond(work.question.params.min_distance)
+               ? pipeline::Outcome::separate()
+               : pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::rigid

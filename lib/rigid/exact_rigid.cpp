@@ -10,12 +10,13 @@
 // 3. Each is divided by the primitive parts of |qA|^2 and |qB|^2 (positive on [0, 1]) while
 //    they divide it exactly; then by its content. A positive factor changes no sign, so the
 //    result has the roots and signs of the true rational function on [0, 1].
-// 4. The procedures of exact_ccd.cpp (candidates: 0 and the roots of V in [0, tmax], or, when V
-//    vanishes identically, 0 and the roots of every in-plane polynomial) and of
-//    exact_separation.cpp (0 and the roots of the terms' f), whose proofs (docs/design.md, 3
-//    and 4b.2) use only that the rule is a Boolean formula over the signs of finitely many
-//    continuous functions whose zero sets are finite or everything, and that the contact set is
-//    closed: both hold for rational functions with a positive denominator.
+// 4. The one exact "earliest root where the rule holds" of the linear paths (exact/
+//    earliest_root.hpp: candidates the roots of V in [0, tmax], or, when V vanishes identically,
+//    0 and the roots of every in-plane polynomial; at d > 0, 0 and the roots of the terms' f),
+//    whose proofs (docs/design.md, 3 and 4b.2) use only that the rule is a Boolean formula over
+//    the signs of finitely many continuous functions whose zero sets are finite or everything,
+//    and that the contact set is closed: both hold for rational functions with a positive
+//    denominator.
 #include "rigid/exact_rigid.hpp"
 
 #include <algorithm>
@@ -24,9 +25,10 @@
 
 #include "contact/contact_rule.hpp"
 #include "exact/algebraic_kernel.hpp"
+#include "exact/earliest_root.hpp"
 #include "exact/stack_budget.hpp"
 #include "rigid/rigid_frame.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::rigid {
 namespace {
@@ -46,15 +48,13 @@ mpz_class common_denominator(const std::vector<const mpq_class*>& values) {
 
 Z times(const mpq_class& x, const mpz_class& l) { return x.get_num() * (l / x.get_den()); }
 
+/// The query type of the kind of Query in integers.
 template <class Query>
-struct IntegerQuery {
-  using Type = std::conditional_t<std::is_same_v<kind_of<Query>, kinds::VertexFace>, RigidVertexFaceQueryT<Z>,
-                                  RigidEdgeEdgeQueryT<Z>>;
-};
+using IntegerQuery = typename kinds::kind_of<Query>::template RigidQuery<Z>;
 
 /// The query and d in integers (step 1).
 template <class Query>
-std::pair<typename IntegerQuery<Query>::Type, Z> to_integers(const Query& q, const mpq_class& d) {
+std::pair<IntegerQuery<Query>, Z> to_integers(const Query& q, const mpq_class& d) {
   std::vector<const mpq_class*> lengths{&d}, qa, qb;
   const auto add3 = [](std::vector<const mpq_class*>& v, const Vec3T<mpq_class>& p) {
     v.insert(v.end(), {&p.x, &p.y, &p.z});
@@ -71,12 +71,12 @@ std::pair<typename IntegerQuery<Query>::Type, Z> to_integers(const Query& q, con
   const auto quat = [](const QuaternionT<mpq_class>& r, const mpz_class& l) {
     return QuaternionT<Z>{times(r.w, l), times(r.x, l), times(r.y, l), times(r.z, l)};
   };
-  typename IntegerQuery<Query>::Type out;
+  IntegerQuery<Query> out;
   out.a_t0 = {vec(q.a_t0.c), quat(q.a_t0.q, LA)};
   out.a_t1 = {vec(q.a_t1.c), quat(q.a_t1.q, LA)};
   out.b_t0 = {vec(q.b_t0.c), quat(q.b_t0.q, LB)};
   out.b_t1 = {vec(q.b_t1.c), quat(q.b_t1.q, LB)};
-  if constexpr (std::is_same_v<kind_of<Query>, kinds::VertexFace>)
+  if constexpr (std::is_same_v<kinds::kind_of<Query>, kinds::VertexFace>)
     out.p = vec(q.p), out.a = vec(q.a), out.b = vec(q.b), out.c = vec(q.c);
   else
     out.a0 = vec(q.a0), out.a1 = vec(q.a1), out.b0 = vec(q.b0), out.b1 = vec(q.b1);
@@ -171,32 +171,7 @@ class Reduced {
   std::size_t bits_ = 0;
 };
 
-int sign_at(const Kernel& kernel, const IntegerPoly& p, const Root& t) {
-  return CGAL::is_zero(p) ? 0 : static_cast<int>(kernel.sign_at_1_object()(p, t));
-}
-
 // --- 4. the contact rule (d = 0) ----------------------------------------------------------------
-
-template <class Terms>
-std::optional<Root> earliest_contact(const Kernel& kernel, const Terms& P, Reduced& reduced, const mpq_class& tmax) {
-  std::vector<Root> times;
-  const IntegerPoly& volume = reduced(P.volume());
-  if (!CGAL::is_zero(volume)) {
-    append_roots(kernel, volume, 0, tmax, times);  // sorted and distinct
-  } else {
-    times.push_back(rational_root(0));
-    contact::for_each_in_plane_poly(P, [&](const auto& p) {
-      const IntegerPoly& r = reduced(p);
-      if (!CGAL::is_zero(r)) append_roots(kernel, r, 0, tmax, times);
-    });
-    sort_unique(kernel, times);
-  }
-  for (const Root& t : times) {
-    const auto sign = [&](const auto& p) { return sign_at(kernel, reduced(p), t); };
-    if (contact::in_contact(P, sign) == contact::Truth::yes) return t;  // exact: never unknown
-  }
-  return std::nullopt;
-}
 
 template <class Query>
 std::optional<TimeInterval> contact_toi(const Query& q, const mpq_class& tmax) {
@@ -217,11 +192,6 @@ std::optional<TimeInterval> contact_toi(const Query& q, const mpq_class& tmax) {
 
 // --- 4. the feature-pair terms (any d) ----------------------------------------------------------
 
-struct IntegerTerm {
-  IntegerPoly distance;
-  std::vector<IntegerPoly> positive;
-};
-
 /// Every feature pair's term on the scaled frame, reduced: f(t) D^k and g(t) D^k (with d D(t) in
 /// place of d: f is homogeneous in the lengths and d together).
 template <class Kind>
@@ -232,7 +202,7 @@ std::vector<IntegerTerm> integer_terms(const ScaledFrame<Z>& frame, const Z& d, 
   const auto dd = d2 * frame.D * frame.D;  // (d D)^2
   std::vector<IntegerTerm> terms;
   for (const kinds::Feature& f : Kind::features)
-    separation::feature_condition(f, rel, dd, [&](const auto& distance, const auto&... positive) {
+    contact::feature_condition(f, rel, dd, [&](const auto& distance, const auto&... positive) {
       IntegerTerm t{reduced.note(reduce(distance, factors)), {}};
       (t.positive.push_back(reduced.note(reduce(positive, factors))), ...);
       terms.push_back(std::move(t));
@@ -246,25 +216,11 @@ std::optional<TimeInterval> separation_toi(const Query& q, const RationalCcdPara
   const ScaledFrame<Z> frame = scaled_frame(integer);
   const Factors factors(frame);
   Reduced reduced(factors);
-  const std::vector<IntegerTerm> terms = integer_terms<kind_of<Query>>(frame, d, reduced, factors);
+  const std::vector<IntegerTerm> terms = integer_terms<kinds::kind_of<Query>>(frame, d, reduced, factors);
   std::optional<TimeInterval> result;
   exact::run_with_stack_for_depth(reduced.depth_bound(), [&] {
     const Kernel kernel;
-    std::vector<Root> times{rational_root(0)};
-    for (const IntegerTerm& t : terms)
-      if (!CGAL::is_zero(t.distance)) append_roots(kernel, t.distance, 0, params.tmax, times);
-    sort_unique(kernel, times);
-    for (const Root& t : times) {
-      const bool holds = std::any_of(terms.begin(), terms.end(), [&](const IntegerTerm& term) {
-        return std::all_of(term.positive.begin(), term.positive.end(),
-                           [&](const IntegerPoly& g) { return sign_at(kernel, g, t) > 0; }) &&
-               sign_at(kernel, term.distance, t) <= 0;
-      });
-      if (holds) {
-        result = enclose(kernel, t);
-        return;
-      }
-    }
+    if (const std::optional<Root> t = earliest_term_time(kernel, terms, params.tmax)) result = enclose(kernel, *t);
   });
   return result;
 }
@@ -280,7 +236,7 @@ ReducedDegrees degrees_of(const Query& q, const mpq_class& d_rational) {
   const auto degree = [](const IntegerPoly& p) { return CGAL::is_zero(p) ? -1 : CGAL::degree(p); };
   out.volume = degree(reduced(P.volume()));
   contact::for_each_in_plane_poly(P, [&](const auto& p) { out.in_plane = std::max(out.in_plane, degree(reduced(p))); });
-  for (const IntegerTerm& t : integer_terms<kind_of<Query>>(frame, d, reduced, factors)) {
+  for (const IntegerTerm& t : integer_terms<kinds::kind_of<Query>>(frame, d, reduced, factors)) {
     out.term = std::max(out.term, degree(t.distance));
     for (const IntegerPoly& g : t.positive) out.term = std::max(out.term, degree(g));
   }
@@ -292,13 +248,6 @@ std::optional<TimeInterval> toi_of(const Query& q, const RationalCcdParams& para
   if (params.min_distance == 0) return contact_toi(q, params.tmax);
   return separation_toi(q, params);
 }
-
-template <class T>
-RigidPoseT<mpq_class> rational(const RigidPoseT<T>& p) {
-  return {{mpq_class(p.c.x), mpq_class(p.c.y), mpq_class(p.c.z)},
-          {mpq_class(p.q.w), mpq_class(p.q.x), mpq_class(p.q.y), mpq_class(p.q.z)}};
-}
-RationalVec3 rational(const Vec3& v) { return {mpq_class(v.x), mpq_class(v.y), mpq_class(v.z)}; }
 
 }  // namespace
 
@@ -312,14 +261,5 @@ std::optional<TimeInterval> exact_separation_toi(const RationalRigidEdgeEdgeQuer
 }
 ReducedDegrees reduced_degrees(const RationalRigidVertexFaceQuery& q, const mpq_class& d) { return degrees_of(q, d); }
 ReducedDegrees reduced_degrees(const RationalRigidEdgeEdgeQuery& q, const mpq_class& d) { return degrees_of(q, d); }
-
-RationalRigidVertexFaceQuery to_rational(const RigidVertexFaceQuery& q) {
-  return {rational(q.a_t0), rational(q.a_t1), rational(q.b_t0), rational(q.b_t1),
-          rational(q.p),    rational(q.a),    rational(q.b),    rational(q.c)};
-}
-RationalRigidEdgeEdgeQuery to_rational(const RigidEdgeEdgeQuery& q) {
-  return {rational(q.a_t0), rational(q.a_t1), rational(q.b_t0), rational(q.b_t1),
-          rational(q.a0),   rational(q.a1),   rational(q.b0),   rational(q.b1)};
-}
 
 }  // namespace exactccd::rigid

@@ -1,14 +1,18 @@
 // The exact path of the rigid motion model (docs/design.md, 9.3): GMP integers for the rule's
 // polynomials in B's frame (rigid_frame.hpp), divided by the positive factors |qA|^2, |qB|^2
 // wherever they divide, CGAL's Algebraic_kernel_d_1 for their roots in [0, tmax] and the exact
-// signs there, the tightest double enclosure of the earliest time. Never wrong, never gives up;
-// slow (milliseconds). The rigid filter (rigid_filter.hpp) defers to it when a sign is uncertain.
+// signs there, the tightest double enclosure of the earliest time, and the stage that runs it
+// last in both rigid questions' stage lists (questions/rigid_methods.cpp). Never wrong, never
+// gives up; slow (milliseconds). The filtered stages defer to it when a sign is uncertain.
 #pragma once
 
 #include <optional>
 
+#include "exact/rational_query.hpp"
 #include "exactccd/rational.hpp"
 #include "exactccd/rigid.hpp"
+#include "exactccd/stats.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::rigid {
 
@@ -42,9 +46,23 @@ ReducedDegrees reduced_degrees(const RationalRigidVertexFaceQuery& q, const mpq_
 /// See ReducedDegrees.
 ReducedDegrees reduced_degrees(const RationalRigidEdgeEdgeQuery& q, const mpq_class& d);
 
-/// The query with its double components as exact rationals.
-RationalRigidVertexFaceQuery to_rational(const RigidVertexFaceQuery& q);
-/// See to_rational(const RigidVertexFaceQuery&).
-RationalRigidEdgeEdgeQuery to_rational(const RigidEdgeEdgeQuery& q);
+/// The exact path's answer to the Work's question (on its query, normalized or not: the same
+/// answer) as an Outcome.
+template <class Query>
+pipeline::Outcome exact_outcome(const pipeline::Work<Query>& work) {
+  const CcdParams& p = work.question.params;
+  const auto t = exact_toi(exact::to_rational(work.query()), RationalCcdParams{p.min_distance, p.tmax});
+  return t ? pipeline::Outcome::collides(t) : pipeline::Outcome::separate();
+}
+
+/// The exact path as the last stage of both rigid questions: always decides.
+struct ExactRigidStage {
+  static constexpr pipeline::Counter counter = &StageCounters::exact;  ///< counted as
+  /// The exact answer, with the TOI.
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    return exact_outcome(work);
+  }
+};
 
 }  // namespace exactccd::rigid

@@ -12,8 +12,6 @@
 // Everything here needs upward rounding (CGAL::Protect_FPU_rounding<true>) held by the caller.
 #pragma once
 
-#include <CGAL/Interval_nt.h>
-
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -21,12 +19,13 @@
 
 #include "contact/polynomial.hpp"
 #include "exactccd/rigid.hpp"
+#include "numeric/interval.hpp"
 #include "rigid/quaternion.hpp"
 #include "rigid/rigid_frame.hpp"
 
 namespace exactccd::rigid {
 
-using Interval = CGAL::Interval_nt<false>;
+using numeric::Interval;
 
 /// A value and its derivative (forward differentiation), both enclosures over a time cell.
 struct Dual {
@@ -82,7 +81,7 @@ struct SlopedPoly {
 template <class Query>
 class IntervalFrame {
  public:
-  using Kind = kind_of<Query>;
+  using Kind = kinds::kind_of<Query>;
   using IQuery = std::conditional_t<std::is_same_v<Kind, kinds::VertexFace>, RigidVertexFaceQueryT<Interval>,
                                     RigidEdgeEdgeQueryT<Interval>>;
 
@@ -198,6 +197,24 @@ class IntervalFrame {
   SlopedPoly<5> volume_;
   mutable std::optional<Positions> positions_;
   mutable std::optional<SlopedPoly<4>> D_;
+};
+
+/// The interval frame of one normalized query, shared by the stages of its list that read it
+/// (the contact walk, the contact probe's, the separation walk: contact_walk.hpp,
+/// rigid_separation_walk.hpp): built once, on first use, so that splitting the walks into stages
+/// computes nothing twice.
+template <class Query>
+class SharedIntervalFrame {
+ public:
+  /// The frame of `normalized_query` (the same query at every call: the Work's after the unit
+  /// scaling stage), built under the caller's upward rounding on first use.
+  const IntervalFrame<Query>& of(const Query& normalized_query) {
+    if (!frame_) frame_.emplace(normalized_query);
+    return *frame_;
+  }
+
+ private:
+  std::optional<IntervalFrame<Query>> frame_;
 };
 
 }  // namespace exactccd::rigid

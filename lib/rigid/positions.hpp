@@ -30,7 +30,7 @@ struct PositionsAt {
 template <class Query, class A>
 auto positions_at(const Query& q, const A& arithmetic) {
   using R = decltype(arithmetic.constant(0.0));
-  using Kind = kind_of<Query>;
+  using Kind = kinds::kind_of<Query>;
   const auto lerp = [&](const Quaternion& a, const Quaternion& b) {
     return QuaternionT<R>{arithmetic.lerp(a.w, b.w), arithmetic.lerp(a.x, b.x), arithmetic.lerp(a.y, b.y),
                           arithmetic.lerp(a.z, b.z)};
@@ -77,7 +77,7 @@ class ValueMotion {
 /// The contact rule's terms on values (vertex-face or edge-edge by the query's kind).
 template <class Query, class R>
 auto value_terms(const std::array<Vec3T<R>, 4>& point) {
-  if constexpr (std::is_same_v<kind_of<Query>, kinds::VertexFace>)
+  if constexpr (std::is_same_v<kinds::kind_of<Query>, kinds::VertexFace>)
     return contact::VertexFaceTerms<ValueMotion<R>>(ValueMotion<R>(point));
   else
     return contact::EdgeEdgeTerms<ValueMotion<R>>(ValueMotion<R>(point));

@@ -26,22 +26,6 @@
 
 namespace exactccd::rigid {
 
-/// The description (kinds::VertexFace or kinds::EdgeEdge) of a rigid query type.
-template <class Query>
-struct KindOf;
-template <class T>
-struct KindOf<RigidVertexFaceQueryT<T>> {
-  using type = kinds::VertexFace;
-};
-template <class T>
-struct KindOf<RigidEdgeEdgeQueryT<T>> {
-  using type = kinds::EdgeEdge;
-};
-/// The kind of a rigid query type: its points are the kind's points, the first
-/// Kind::first_points of them on body A.
-template <class Query>
-using kind_of = typename KindOf<std::decay_t<Query>>::type;
-
 /// The four poses of a query: A at t0, A at t1, B at t0, B at t1.
 template <class Query>
 auto poses(const Query& q) {
@@ -124,7 +108,7 @@ class ScaledFrameParts {
 /// intervals.
 template <class Query>
 auto scaled_frame(const Query& q) {
-  using Kind = kind_of<Query>;
+  using Kind = kinds::kind_of<Query>;
   const ScaledFrameParts<Query> parts(q);
   ScaledFrame<typename ScaledFrameParts<Query>::NT> f;
   f.norm_a = parts.norm_a;
@@ -155,7 +139,7 @@ class ScaledFrameMotion {
 /// the query's kind).
 template <class Query, class NT>
 auto contact_terms(const ScaledFrame<NT>& frame) {
-  if constexpr (std::is_same_v<kind_of<Query>, kinds::VertexFace>)
+  if constexpr (std::is_same_v<kinds::kind_of<Query>, kinds::VertexFace>)
     return contact::VertexFaceTerms<ScaledFrameMotion<NT>>(ScaledFrameMotion<NT>(frame));
   else
     return contact::EdgeEdgeTerms<ScaledFrameMotion<NT>>(ScaledFrameMotion<NT>(frame));

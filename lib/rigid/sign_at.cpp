@@ -7,7 +7,7 @@
 #include "contact/polynomial.hpp"
 #include "numeric/double_word.hpp"
 #include "rigid/positions.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::rigid {
 namespace {
@@ -61,7 +61,7 @@ R distance_value(const kinds::Feature& f, const PositionsAt<R>& at, const R& d) 
   const ValueMotion<R> motion(at.point);
   const R dD = d * at.D;
   R value = dD;
-  separation::feature_condition(f, [&](int i, int j) { return motion.rel(i, j); }, dD * dD,
+  contact::feature_condition(f, [&](int i, int j) { return motion.rel(i, j); }, dD * dD,
                                 [&](const R& distance, const auto&...) { value = distance; });
   return value;
 }

@@ -4,7 +4,7 @@
 // positions (positions.hpp), which almost always decides; exactly in GMP rationals only where it
 // does not (a root exactly at a double, or values below the error bound).
 //
-// Double-double. The query is normalized (normalized.hpp: lengths below 2, quaternion components
+// Double-double. The query is normalized (rigid_unit_scaling.hpp: lengths below 2, quaternion components
 // below 2, both ends of a body scaled alike). Every interpolation q0 + t (q1 - q0) and
 // (cA - cB)(t) is formed from exact differences (TwoSum, difference_at) and one product by t;
 // then the quaternion products, norms and rotations (quaternion.hpp) and the terms

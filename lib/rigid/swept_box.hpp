@@ -14,12 +14,11 @@
 // exact curves; overflow gives infinite bounds, which still hold them.
 #pragma once
 
-#include <CGAL/Interval_nt.h>
-
 #include <array>
 #include <vector>
 
 #include "exactccd/rigid.hpp"
+#include "numeric/interval.hpp"
 
 namespace exactccd::rigid {
 
@@ -33,7 +32,7 @@ struct Box {
 /// (CGAL::Protect_FPU_rounding<true>) around every call, constructor included.
 class SweptBody {
  public:
-  using I = CGAL::Interval_nt<false>;
+  using I = numeric::Interval;
 
   /// The body moving from pose t0 to pose t1 (finite, quaternion path not through 0).
   SweptBody(const RigidPose& t0, const RigidPose& t1);

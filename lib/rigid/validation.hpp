@@ -2,7 +2,7 @@
 #pragma once
 
 #include <cmath>
-#include <stdexcept>
+#include <optional>
 #include <string>
 
 #include "exactccd/rigid.hpp"
@@ -19,20 +19,17 @@ bool quaternion_path_vanishes(const Quaternion& q0, const Quaternion& q1);
 /// pose, or a quaternion path that vanishes in [0, 1].
 const char* invalid_motion(const RigidPose& t0, const RigidPose& t1);
 
-/// Throws std::invalid_argument, the message starting with function() (called only then: no
-/// allocation on the common path), when a number of the query is not finite, a quaternion path
-/// vanishes in [0, 1], d is negative or not finite, or tmax is not in (0, 1].
-template <class Query, class Name>
-void validate(const Query& q, const CcdParams& params, Name&& function) {
-  const auto fail = [&](const std::string& why) { throw std::invalid_argument(function() + ": " + why); };
-  if (const char* why = invalid_motion(q.a_t0, q.a_t1)) fail(std::string("body A: ") + why);
-  if (const char* why = invalid_motion(q.b_t0, q.b_t1)) fail(std::string("body B: ") + why);
+/// Why a rigid query is bad input, or nothing: a non-finite number, a quaternion path that
+/// vanishes in [0, 1] (the entry point's check of the query, api/entry_point.cpp; its
+/// parameters are checked there as for linear queries). Allocates only for bad input.
+template <class Query>
+std::optional<std::string> invalid_query(const Query& q) {
+  if (const char* why = invalid_motion(q.a_t0, q.a_t1)) return std::string("body A: ") + why;
+  if (const char* why = invalid_motion(q.b_t0, q.b_t1)) return std::string("body B: ") + why;
   for (const Vec3& p : body_points(q))
     if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)))
-      fail("non-finite body point coordinate (NaN or infinity)");
-  if (!(std::isfinite(params.min_distance) && params.min_distance >= 0))
-    fail("min_distance must be finite and >= 0, not " + std::to_string(params.min_distance));
-  if (!(params.tmax > 0 && params.tmax <= 1)) fail("tmax must be in (0, 1], not " + std::to_string(params.tmax));
+      return std::string("non-finite body point coordinate (NaN or infinity)");
+  return std::nullopt;
 }
 
 }  // namespace exactccd::rigid

@@ -1,18 +1,17 @@
 #include "scene/time_bounds.hpp"
 
-#include <CGAL/Interval_nt.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "filter/normalize.hpp"
+#include "filter/unit_scaling.hpp"
 #include "filter/volume_exclusion.hpp"
+#include "numeric/interval.hpp"
 
 namespace exactccd::scene {
 namespace {
 
-using Interval = CGAL::Interval_nt<false>;  // only under Protect_FPU_rounding
+using numeric::Interval;  // only under Protect_FPU_rounding
 
 }  // namespace
 

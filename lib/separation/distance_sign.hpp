@@ -16,7 +16,7 @@
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "numeric/certified_sign.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::separation {
 
@@ -34,7 +34,7 @@ int certified_distance_sign(const kinds::Feature& f, const std::array<Vec3, N>& 
   const numeric::GeometryAt<N> at(scaled, t);
   if (!at.usable()) return 0;
   Approx value{{0.0, 0.0}, 0.0};
-  feature_condition(f, [&](int i, int j) { return at.vector(i, j); }, at.d_squared(),
+  contact::feature_condition(f, [&](int i, int j) { return at.vector(i, j); }, at.d_squared(),
                     [&](const Approx& distance, const auto&...) { value = distance; });
   if (approximation) *approximation = value.value.hi;
   return numeric::double_word::certain_sign(value);
@@ -79,7 +79,7 @@ int exact_distance_sign(const kinds::Feature& f, const std::array<Vec3, N>& x, d
   for (std::size_t p = 0; p < P; ++p)
     exact[p] = {move_exactly(x[p].x, x[p + P].x), move_exactly(x[p].y, x[p + P].y), move_exactly(x[p].z, x[p + P].z)};
   const mpz_class D = scaled(d) << K;
-  return sgn(distance_at(f, exact, Z{{mpz_class(D * D)}}).c[0]);
+  return sgn(contact::distance_at(f, exact, Z{{mpz_class(D * D)}}).c[0]);
 }
 
 /// The exact sign of feature f's distance polynomial at the double m in [0, 1], from the
@@ -105,7 +105,7 @@ double root_guess(const kinds::Feature& f, const std::array<Vec3, N>& x, double 
     std::array<Vec3T<L>, P> at;
     const auto move = [&](double x0, double x1) { return L(x0) + t * (L(x1) - L(x0)); };
     for (std::size_t p = 0; p < P; ++p) at[p] = {move(x[p].x, x[p + P].x), move(x[p].y, x[p + P].y), move(x[p].z, x[p + P].z)};
-    return distance_at(f, at, L(d) * L(d));
+    return contact::distance_at(f, at, L(d) * L(d));
   };
   L lo = a, hi = b, f_lo = value(lo), f_hi = value(hi);
   if (!(f_lo > 0 && f_hi < 0)) return a + (b - a) / 2;

@@ -1,12 +1,16 @@
-// The exact minimum-separation path: GMP rationals for the terms of separation_terms.hpp,
-// CGAL's Algebraic_kernel_d_1 for their roots and for exact signs at those roots.
+// The exact minimum-separation path: GMP rationals for the terms of contact/separation_terms.hpp,
+// CGAL's Algebraic_kernel_d_1 for their roots and for exact signs at those roots
+// (exact_separation.cpp), and the stage that runs it last in the minimum-separation question's
+// stage list.
 #pragma once
 
 #include <optional>
 
+#include "exact/rational_query.hpp"
 #include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/outcome.hpp"
 
 namespace exactccd::separation {
 
@@ -21,5 +25,20 @@ namespace exactccd::separation {
 template <class RationalQuery>
 std::optional<TimeInterval> exact_toi(const RationalQuery& q, const RationalCcdParams& params,
                                       const kinds::FeatureMask& use = kinds::kAllFeatures);
+
+/// The exact path as the minimum-separation question's last stage (any kind, any d and tmax):
+/// always decides. Without the feature pairs the earlier stages proved apart (findings.use,
+/// from separation_walk.hpp's stage).
+struct ExactSeparationStage {
+  static constexpr pipeline::Counter counter = &StageCounters::exact;  ///< counted as
+  /// The exact answer and TOI.
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    const CcdParams& p = work.question.params;
+    const auto toi = exact_toi(exact::to_rational(work.query()),
+                               RationalCcdParams{mpq_class(p.min_distance), mpq_class(p.tmax)}, work.findings.use);
+    return toi ? pipeline::Outcome::collides(toi) : pipeline::Outcome::separate();
+  }
+};
 
 }  // namespace exactccd::separation

@@ -67,7 +67,7 @@
 #include "numeric/power_of_two.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "pipeline/outcome.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::separation {
 
@@ -322,7 +322,7 @@ bool primitives_separated(const ProjectionFrame<N>& frame, bool both_ends = true
 template <class Query>
 bool separated_beyond(const Query& q, double d) {
   using Kind = kinds::kind_of<Query>;
-  return primitives_separated<Kind>(ProjectionFrame(points3<double>(q), d));
+  return primitives_separated<Kind>(ProjectionFrame(contact::points3<double>(q), d));
 }
 
 /// True when a direction certifies that feature pair f's two parts (its first point, or first

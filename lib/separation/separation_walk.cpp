@@ -97,8 +97,8 @@ class SeparationWalk {
     terms_.reserve(used);
     std::array<Vec3T<Interval>, N> xi;
     for (std::size_t i = 0; i < N; ++i) xi[i] = {Interval(x_[i].x), Interval(x_[i].y), Interval(x_[i].z)};
-    for_each_term<Kind>(xi, Interval(d_) * Interval(d_), findings_.use.data(),
-                        [&](Term<Interval>&& t) { terms_.emplace_back(std::move(t)); });
+    contact::for_each_term<Kind>(xi, Interval(d_) * Interval(d_), findings_.use.data(),
+                        [&](contact::Term<Interval>&& t) { terms_.emplace_back(std::move(t)); });
     if (!at_zero) return std::nullopt;
     return decide_at_zero();
   }
@@ -234,7 +234,7 @@ class SeparationWalk {
 template <class Query>
 pipeline::Outcome separation_walk(const Query& q, const pipeline::Question& question, pipeline::Findings& findings) {
   using Kind = kinds::kind_of<Query>;
-  return SeparationWalk<Kind>(points3<double>(q), question, findings).run();
+  return SeparationWalk<Kind>(contact::points3<double>(q), question, findings).run();
 }
 
 // The walk for every kind of the minimum-separation question (kinds::for_each_kind).

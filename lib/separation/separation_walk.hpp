@@ -48,9 +48,7 @@ struct SeparationWalkStage {
   /// The walk on work.query().
   template <class Query>
   pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
-    pipeline::Outcome o = separation_walk(work.query(), work.question, work.findings);
-    if (work.findings.used_gmp) o.counted_as = &StageCounters::integer;
-    return o;
+    return pipeline::counted_with_gmp(separation_walk(work.query(), work.question, work.findings), work.findings);
   }
 };
 

@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "numeric/interval.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::separation {
 
@@ -31,7 +31,7 @@ Interval evaluate(const contact::Poly<Interval, D>& p, const Interval& t) {
 }
 
 /// p' (coefficients above p's degree left exactly [0, 0], as evaluate expects).
-inline contact::Poly<Interval, 5> derivative(const Poly6<Interval>& p) {
+inline contact::Poly<Interval, 5> derivative(const contact::Poly6<Interval>& p) {
   contact::Poly<Interval, 5> r;
   int degree = 6;
   while (degree > 0 && p.c[degree].inf() == 0 && p.c[degree].sup() == 0) --degree;
@@ -42,11 +42,11 @@ inline contact::Poly<Interval, 5> derivative(const Poly6<Interval>& p) {
 /// A term with the derivatives of its polynomials (formed once per query, used on every cell):
 /// slope[0] of the distance, slope[1 + k] of positive[k].
 struct SlopedTerm {
-  Term<Interval> term;
+  contact::Term<Interval> term;
   std::array<contact::Poly<Interval, 5>, 5> slope;
 
   /// The term and its derivatives.
-  explicit SlopedTerm(Term<Interval>&& t) : term(std::move(t)) {
+  explicit SlopedTerm(contact::Term<Interval>&& t) : term(std::move(t)) {
     slope[0] = derivative(term.distance);
     for (int k = 0; k < term.positives; ++k) slope[1 + k] = derivative(term.positive[k]);
   }
@@ -57,7 +57,7 @@ struct SlopedTerm {
 /// otherwise the mean-value form p(m) + p'(t) (t - m) intersected with Horner's scheme over t
 /// (both enclose the range; the first shrinks with the cell's width squared near a root, where
 /// Horner's scheme over power-basis coefficients suffers from cancellation).
-inline Interval range(const Poly6<Interval>& p, const contact::Poly<Interval, 5>& dp, double a, double b) {
+inline Interval range(const contact::Poly6<Interval>& p, const contact::Poly<Interval, 5>& dp, double a, double b) {
   const Interval t(a, b);
   const Interval slope = evaluate(dp, t);
   if (numeric::certain_sign(slope) != 0) {
@@ -72,7 +72,7 @@ inline Interval range(const Poly6<Interval>& p, const contact::Poly<Interval, 5>
 
 /// The term holds nowhere in the cell [a, b] (certainly).
 inline bool excluded(const SlopedTerm& sloped, double a, double b) {
-  const Term<Interval>& term = sloped.term;
+  const contact::Term<Interval>& term = sloped.term;
   if (range(term.distance, sloped.slope[0], a, b).inf() > 0) return true;
   for (int k = 0; k < term.positives; ++k)
     if (range(term.positive[k], sloped.slope[1 + k], a, b).sup() <= 0) return true;
@@ -80,7 +80,7 @@ inline bool excluded(const SlopedTerm& sloped, double a, double b) {
 }
 
 /// The term holds at t (certainly): f <= 0 and every g > 0.
-inline bool holds(const Term<Interval>& term, const Interval& t) {
+inline bool holds(const contact::Term<Interval>& term, const Interval& t) {
   if (evaluate(term.distance, t).sup() > 0) return false;
   for (int k = 0; k < term.positives; ++k)
     if (evaluate(term.positive[k], t).inf() <= 0) return false;
@@ -91,7 +91,7 @@ inline bool holds(const Term<Interval>& term, const Interval& t) {
 /// hold: its g certainly > 0 on the cell, f certainly > 0 at a and < 0 at b, f' certainly
 /// nonzero on the cell.
 inline bool single_entry(const SlopedTerm& sloped, double a, double b) {
-  const Term<Interval>& term = sloped.term;
+  const contact::Term<Interval>& term = sloped.term;
   for (int k = 0; k < term.positives; ++k)
     if (!(range(term.positive[k], sloped.slope[1 + k], a, b).inf() > 0)) return false;
   return numeric::certain_sign(evaluate(term.distance, Interval(a))) > 0 &&

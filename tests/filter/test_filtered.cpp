@@ -42,7 +42,7 @@
 #include "numeric/fp_environment.hpp"
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
-#include "filter/separating_plane.hpp"
+#include "separation/separating_plane.hpp"
 #include "filter/static_stage.hpp"
 #include "filter/toi_narrowing.hpp"
 #include "filter/volume_exclusion.hpp"
@@ -1128,7 +1128,7 @@ int run_each_stage_checking_environment(const TestQuery& q) {
     (void)filter::contact_at_end(query, 0);
     (void)filter::volume_sign_at_end(query, 1);
     check("static predicates");
-    (void)filter::separated_by_plane(query);
+    (void)separation::separated_by_plane(query);
     check("separating plane");
     pipeline::Findings findings;
     if (q.kind == Kind::vertex_face)

@@ -1,4 +1,4 @@
-// The interval stage's term values over a time interval (filter/interval_values.hpp): every
+// The interval stage's term values over a time interval (filter/interval/values.hpp): every
 // term of VertexFaceTerms / EdgeEdgeTerms built on MotionOver (the cell T) must contain the
 // exact value of the same term's rational polynomial (VertexFacePolys<mpq_class>, ...) at every
 // t in T; checked at T's ends and midpoint on random, nearly coplanar and grid queries, on wide

@@ -14,8 +14,8 @@
 
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
-#include "pipeline/contact_question.hpp"
-#include "filter/normalize.hpp"
+#include "questions/contact_question.hpp"
+#include "filter/unit_scaling.hpp"
 #include "filter/volume_exclusion.hpp"
 #include "fuzz/families.hpp"
 #include "io/benchmark_csv.hpp"
@@ -181,7 +181,7 @@ TEST(VolumeExclusion, VerdictsAgreeWithExactSignsAndAreScaleInvariantInRange) {
       EXPECT_TRUE(was_scaled);
       EXPECT_TRUE(filter::volume_excluded(unit_query)) << "query " << n;
       StageCounters counters;
-      EXPECT_FALSE(pipeline::contact_question(from_rows<EdgeEdgeQuery>(far), pipeline::Question{}, &counters));
+      EXPECT_FALSE(questions::contact_question(from_rows<EdgeEdgeQuery>(far), pipeline::Question{}, &counters));
       EXPECT_EQ(counters.volume_exclusion, 1u) << "query " << n << " scaled by 2^" << k << ": not decided by the retry";
     }
   }

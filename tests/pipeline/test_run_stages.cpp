@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "pipeline/contact_probe.hpp"
 #include "pipeline/run_stages.hpp"
 
 namespace exactccd::pipeline {
@@ -101,6 +102,67 @@ TEST(RunStages, NoDecidingStageIsAnErrorNotAnAnswer) {
   EXPECT_THROW(run_stages(work, Scripted{Outcome::undecided(), &log, 1}), std::logic_error);
   Work<VertexFaceQuery> toi(kQuery, Question{{}, true}, nullptr);  // a collision whose TOI nobody finds
   EXPECT_THROW(run_stages(toi, Scripted{Outcome::collides(), &log, 1}), std::logic_error);
+}
+
+TEST(RunNestedStages, ANestedListMayLeaveTheQueryUndecided) {
+  std::vector<int> log;
+  StageCounters counters;
+  Work<VertexFaceQuery> work(kQuery, Question{}, &counters);
+  EXPECT_EQ(run_nested_stages(work, Scripted{Outcome::undecided(), &log, 1}).answer, Outcome::Answer::undecided);
+  EXPECT_EQ(counters.total(), 0u);
+  Work<VertexFaceQuery> hit(kQuery, Question{}, &counters);
+  const Outcome o = run_nested_stages(hit, Scripted{Outcome::undecided(), &log, 2}, Scripted{Outcome::collides(kToi), &log, 3});
+  ASSERT_EQ(o.answer, Outcome::Answer::collides);
+  EXPECT_EQ(*o.toi, kToi);
+  EXPECT_EQ(counters.interval, 1u);
+  Work<VertexFaceQuery> apart(kQuery, Question{}, &counters);
+  EXPECT_EQ(run_nested_stages(apart, Scripted{Outcome::separate(), &log, 4}).answer, Outcome::Answer::separate);
+}
+
+/// A scripted contact question for the probe: answers `touch`, counted at the interval counter
+/// when it decides, with `gmp` in the findings it hands back; records the question it was asked.
+struct ScriptedContact {
+  Outcome touch;
+  bool gmp = false;
+  Question* asked = nullptr;
+  Outcome operator()(const VertexFaceQuery&, const Question& question, StageCounters* counters, Findings& found) const {
+    *asked = question;
+    found.used_gmp = gmp;
+    if (touch.answer != Outcome::Answer::undecided && counters) ++counters->interval;
+    return touch;
+  }
+};
+
+TEST(ContactProbe, ACollisionEnclosesTheEarliestTimeAndIsCountedWhereTheContactQuestionDecided) {
+  StageCounters counters;
+  Question asked;
+  Work<VertexFaceQuery> work(kQuery, Question{{0.125, 0.5}, false}, &counters);
+  const Outcome o = contact_probe(ScriptedContact{Outcome::collides(TimeInterval{0.25, 0.375}), false, &asked})(work);
+  ASSERT_EQ(o.answer, Outcome::Answer::collides);
+  EXPECT_EQ(*o.toi, (TimeInterval{0.0, 0.375}));  // touching at t0 is within d at t0: [0, hi] holds the earliest time
+  EXPECT_EQ(asked.params.min_distance, 0.0);     // the contact question, over the same [0, tmax], answer alone
+  EXPECT_EQ(asked.params.tmax, 0.5);
+  EXPECT_FALSE(asked.want_toi);
+  EXPECT_EQ(counters.interval, 1u);
+  EXPECT_FALSE(work.findings.used_gmp);
+}
+
+TEST(ContactProbe, OtherwiseItCountsNothingAndHandsOverGmpUse) {
+  StageCounters counters;
+  Question asked;
+  for (const Outcome& touch : {Outcome::separate(), Outcome::undecided()}) {
+    Work<VertexFaceQuery> work(kQuery, Question{{0.125, 1.0}, false}, &counters);
+    EXPECT_EQ(contact_probe(ScriptedContact{touch, true, &asked})(work).answer, Outcome::Answer::undecided);
+    EXPECT_TRUE(work.findings.used_gmp);
+    Work<VertexFaceQuery> without(kQuery, Question{{0.125, 1.0}, false}, &counters);
+    (void)contact_probe(ScriptedContact{touch, false, &asked})(without);
+    EXPECT_FALSE(without.findings.used_gmp);
+  }
+  EXPECT_EQ(counters.total(), 0u);
+  Work<VertexFaceQuery> toi(kQuery, Question{{0.125, 1.0}, true}, &counters);  // the TOI asked: no probe
+  asked = Question{{-1.0, -1.0}, true};
+  EXPECT_EQ(contact_probe(ScriptedContact{Outcome::collides(kToi), false, &asked})(toi).answer, Outcome::Answer::undecided);
+  EXPECT_EQ(asked.params.tmax, -1.0);  // not asked
 }
 
 }  // namespace

@@ -11,9 +11,11 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 #include "exactccd/exactccd.h"
 #include "exactccd/rigid.hpp"
+#include "exact/rational_query.hpp"
 #include "rigid/exact_rigid.hpp"
 #include "rigid_support.hpp"
 
@@ -206,6 +208,30 @@ TEST_P(RigidClosedForm, BadInputIsRefused) {
   EXPECT_NO_THROW(rigid_vertex_face_ccd(x, {}, m));
 }
 
+TEST(RigidEntryPoint, RefusesAsTheLinearEntryPoint) {
+  // One entry point for both motion models (api/entry_point.cpp): the rigid function's name,
+  // the motion model's own reason for a bad query, the parameters' numbers as they read back.
+  const auto message = [](auto&& call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  const auto q = turning_vertex({3, 4, 0});
+  EXPECT_EQ(message([&] { (void)rigid_vertex_face_toi(q, {0, 1.0000000000000002}); }),
+            "exactccd::rigid_vertex_face_toi: tmax must be in (0, 1], not 1.0000000000000002");
+  EXPECT_EQ(message([&] { (void)rigid_vertex_face_ccd(q, {-1e-300, 1}); }),
+            "exactccd::rigid_vertex_face_ccd: min_distance must be finite and >= 0, not -1e-300");
+  EXPECT_EQ(message([&] { (void)rigid_vertex_face_ccd(q, {}, static_cast<Method>(7)); }),
+            "exactccd::rigid_vertex_face_ccd: unknown method 7");
+  auto bad = q;
+  bad.b_t1.q = {0, 0, 0, 0};
+  EXPECT_EQ(message([&] { (void)rigid_vertex_face_toi(bad, {}); }),
+            "exactccd::rigid_vertex_face_toi: body B: zero quaternion at t = 1");
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, RigidClosedForm, ::testing::Values(Method::filtered, Method::exact),
                          [](const auto& info) { return info.param == Method::filtered ? "filtered" : "exact"; });
 
@@ -242,7 +268,7 @@ void contact_rule_equals_terms(std::uint64_t seed, int count) {
   int collisions = 0;
   for (int i = 0; i < count; ++i) {
     const Query q = random_query<Query>(rng, i % 3 == 2);
-    const auto r = rigid::to_rational(q);
+    const auto r = exact::to_rational(q);
     for (const double tmax : {1.0, 0.5}) {
       const RationalCcdParams p{0, tmax};
       const auto rule = rigid::exact_toi(r, p);
@@ -274,12 +300,12 @@ TEST(RigidExact, DegreesOfTheReducedPolynomials) {
   const auto quat = [&] { return Quaternion{10.0 + digit(rng), double(digit(rng)), double(digit(rng)), double(digit(rng))}; };
   for (int i = 0; i < 5; ++i) {
     const RigidVertexFaceQuery vf{{v(), quat()}, {v(), quat()}, {v(), quat()}, {v(), quat()}, v(), v(), v(), v()};
-    const auto a = rigid::reduced_degrees(rigid::to_rational(vf), mpq_class(1, 7));
+    const auto a = rigid::reduced_degrees(exact::to_rational(vf), mpq_class(1, 7));
     EXPECT_EQ(a.volume, 5);
     EXPECT_EQ(a.in_plane, 6);
     EXPECT_EQ(a.term, 10);
     const RigidEdgeEdgeQuery ee{{v(), quat()}, {v(), quat()}, {v(), quat()}, {v(), quat()}, v(), v(), v(), v()};
-    const auto b = rigid::reduced_degrees(rigid::to_rational(ee), mpq_class(1, 7));
+    const auto b = rigid::reduced_degrees(exact::to_rational(ee), mpq_class(1, 7));
     EXPECT_EQ(b.volume, 5);
     EXPECT_EQ(b.in_plane, 9);
     EXPECT_EQ(b.term, 10);

@@ -131,7 +131,7 @@ TEST(RigidScene, FindCollisionsEqualsBruteForce) {
 }
 
 TEST(RigidScene, TheTumblingBoxStepsEqualBruteForce) {
-  // Every sixth step of the bundled box scene (lib/scene/rigid_sim.hpp), brute force by the
+  // Every sixth step of the bundled box scene (tools/lib/scenes/rigid_sim.hpp), brute force by the
   // filtered method (equal to the exact one: test_rigid_filtered): the broad phase drops no pair.
   rigid_sim::Scene scene = rigid_sim::box_on_plane();
   int collisions = 0;

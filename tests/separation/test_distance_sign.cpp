@@ -1,7 +1,7 @@
 // separation::certified_distance_sign (double-double, certified, separation/distance_sign.hpp):
 // every sign it certifies equals the exact sign of the feature's distance polynomial f at that
 // double time, computed independently in GMP rationals from the power-basis polynomial of the
-// exact path (separation::terms on mpq_class, evaluated by Horner's scheme); it is decisive at
+// exact path (contact::terms on mpq_class, evaluated by Horner's scheme); it is decisive at
 // the doubles next to f's roots (what the interval stage's narrowing needs), also with
 // subnormal and huge coordinates and d; and it never certifies an exact zero.
 #include <gmpxx.h>
@@ -18,7 +18,7 @@
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "separation/distance_sign.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd {
 namespace {
@@ -27,15 +27,15 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// Term `feature`'s distance polynomial, exactly (the exact path's polynomials).
 template <class Kind, std::size_t N>
-separation::Poly6<mpq_class> exact_distance(const std::array<Vec3, N>& x, double d, std::size_t feature) {
+contact::Poly6<mpq_class> exact_distance(const std::array<Vec3, N>& x, double d, std::size_t feature) {
   std::array<Vec3T<mpq_class>, N> q;
   for (std::size_t i = 0; i < N; ++i) q[i] = {mpq_class(x[i].x), mpq_class(x[i].y), mpq_class(x[i].z)};
   const mpq_class D(d);
-  return separation::terms<Kind>(q, mpq_class(D * D)).at(feature).distance;
+  return contact::terms<Kind>(q, mpq_class(D * D)).at(feature).distance;
 }
 
 /// The exact sign of p at t.
-int exact_sign(const separation::Poly6<mpq_class>& p, double t) {
+int exact_sign(const contact::Poly6<mpq_class>& p, double t) {
   const mpq_class T(t);
   mpq_class v = p.c[6];
   for (int k = 5; k >= 0; --k) v = v * T + p.c[k];
@@ -49,7 +49,7 @@ struct Counts {
 /// Certified sign against the exact one at t; `near_root`: t is next to a root (counted for
 /// decisiveness where the exact value is nonzero).
 template <class Kind, std::size_t N>
-void check(const std::array<Vec3, N>& x, double d, std::size_t feature, const separation::Poly6<mpq_class>& p,
+void check(const std::array<Vec3, N>& x, double d, std::size_t feature, const contact::Poly6<mpq_class>& p,
            double t, bool near_root, Counts& c, const std::string& what) {
   const int fast = separation::certified_distance_sign(Kind::features[feature], x, d, t);
   const int exact = exact_sign(p, t);
@@ -67,7 +67,7 @@ void check(const std::array<Vec3, N>& x, double d, std::size_t feature, const se
 /// narrowed by bisection over the doubles with exact signs to consecutive doubles lo < hi
 /// (or an exact root); then lo, hi and their neighbours are checked.
 template <class Kind, std::size_t N>
-void check_near_roots(const std::array<Vec3, N>& x, double d, std::size_t feature, const separation::Poly6<mpq_class>& p,
+void check_near_roots(const std::array<Vec3, N>& x, double d, std::size_t feature, const contact::Poly6<mpq_class>& p,
                       Counts& c, const std::string& what) {
   constexpr int kGrid = 16;
   double a = 0;

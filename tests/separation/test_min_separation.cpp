@@ -1,5 +1,5 @@
 // Minimum separation and the time limit (CcdParams): the exact path's term decomposition
-// (separation/separation_terms.hpp) against the independent contact path at d = 0, and the
+// (contact/separation_terms.hpp) against the independent contact path at d = 0, and the
 // filtered method against the exact one for every kind and random d. The hand-derived cases
 // are in test_min_separation_catalogue.cpp, the distance checks with CGAL's constructions in
 // test_min_separation_properties.cpp.

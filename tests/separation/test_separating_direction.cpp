@@ -21,7 +21,7 @@
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "separation/separating_direction.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd {
 namespace {

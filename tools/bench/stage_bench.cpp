@@ -14,7 +14,7 @@
 #include "filter/integer_stage.hpp"
 #include "filter/interval_stage.hpp"
 #include "filter/volume_exclusion.hpp"
-#include "pipeline/contact_question.hpp"
+#include "questions/contact_question.hpp"
 #include "methods/methods.hpp"
 
 namespace {
@@ -114,7 +114,7 @@ void BM_FilteredUnguarded(benchmark::State& state, const VertexFaceQuery& query)
   VertexFaceQuery q = query;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    benchmark::DoNotOptimize(exactccd::pipeline::contact_question(q, exactccd::pipeline::Question{}, nullptr));
+    benchmark::DoNotOptimize(exactccd::questions::contact_question(q, exactccd::pipeline::Question{}, nullptr));
   }
 }
 BENCHMARK_CAPTURE(BM_FilteredUnguarded, filtered_miss_unguarded, kMiss);

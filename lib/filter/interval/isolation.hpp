@@ -1,6 +1,6 @@
-// Interval root isolation and signs for the interval stage (docs/design.md, 5.2): the roots of
-// the contact polynomials (numeric/bernstein_isolation.hpp, at most 2^-30 apart) and certain
-// signs over a cell.
+// Interval root isolation for the interval stage (docs/design.md, 5.2): the roots of the
+// contact polynomials (numeric/bernstein_isolation.hpp, at most 2^-30 apart); the certain signs
+// over a cell are contact/interval_oracle.hpp's.
 //
 // Soundness rests on the inclusion property of interval arithmetic: every interval computed
 // here contains the exact real value of the quantity it stands for. Interval_nt<false> needs
@@ -15,11 +15,14 @@
 #include <limits>
 
 #include "contact/contact_rule.hpp"
+#include "contact/interval_oracle.hpp"
 #include "numeric/bernstein_isolation.hpp"
 #include "numeric/interval.hpp"
 
 namespace exactccd::filter::interval {
 
+using contact::exactly_zero;
+using contact::IntervalSignOracle;
 using numeric::certain_sign;
 using numeric::classify;
 using numeric::Interval;  // requires the rounding mode set by the caller
@@ -54,28 +57,5 @@ template <int D>
 Isolation isolate_roots(const contact::Poly<Interval, D>& p, RootCells& out, bool include_ends = true) {
   return isolate_roots(p, out, include_ends, [](int) { return contact::kUnknownSign; });
 }
-
-template <int D>
-bool exactly_zero(const contact::Poly<Interval, D>& p) {
-  for (const Interval& c : p.c)
-    if (classify(c) != SignClass::zero) return false;
-  return true;
-}
-
-/// Sign oracle over a time interval: certain signs, or kUnknownSign. The polynomial whose root
-/// defines the candidate (if any) is zero there by construction.
-struct IntervalSignOracle {
-  Interval t;
-  const void* zero_at_candidate = nullptr;
-  template <int D>
-  int operator()(const contact::Poly<Interval, D>& p) const {
-    if (static_cast<const void*>(&p) == zero_at_candidate) return 0;
-    const Interval value = p(t);
-    const int s = certain_sign(value);
-    if (s != 0) return s;
-    if (value.inf() == 0 && value.sup() == 0) return 0;  // p vanishes identically on t
-    return contact::kUnknownSign;
-  }
-};
 
 }  // namespace exactccd::filter::interval

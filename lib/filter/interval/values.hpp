@@ -56,15 +56,10 @@ class MotionOver {
   mutable std::array<std::optional<Vec3T<Interval>>, 16> rel_;
 };
 
-/// Certified signs of term values (contact_rule.hpp's oracle protocol): a strict sign when the
-/// interval excludes 0, 0 when it is exactly [0, 0], else unknown.
+/// Certified signs of term values (contact_rule.hpp's oracle protocol): numeric::interval_sign.
 struct ValueSignOracle {
-  int operator()(const Interval& value) const {
-    const int s = certain_sign(value);
-    if (s != 0) return s;
-    if (value.inf() == 0 && value.sup() == 0) return 0;
-    return contact::kUnknownSign;
-  }
+  /// The sign the value certifies, or kUnknownSign.
+  int operator()(const Interval& value) const { return numeric::interval_sign(value); }
 };
 
 /// The in-plane rule over the cell, from the values of the terms of P's query over it (a

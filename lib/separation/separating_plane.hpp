@@ -37,9 +37,9 @@
 #include "kinds/primitive_kinds.hpp"
 #include "pipeline/outcome.hpp"
 #include "separation/separating_direction.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
-namespace exactccd::filter {
+namespace exactccd::separation {
 
 /// The edges of a contact kind's points at t0 whose perpendicular directions are tried: the
 /// triangle's three (vertex-face), the two edges (edge-edge).
@@ -58,7 +58,7 @@ template <class Query>
 bool separated_by_plane(const Query& q) {
   using Kind = kinds::kind_of<Query>;
   constexpr std::size_t P = Kind::points;
-  const separation::ProjectionFrame frame(separation::points3<double>(q), 0.0);
+  const separation::ProjectionFrame frame(contact::points3<double>(q), 0.0);
   if (!frame.usable) return false;
   std::array<separation::Side, P> side;
   for (std::size_t i = 0; i < P; ++i) side[i] = static_cast<int>(i) < Kind::first_points ? separation::Side::first : separation::Side::second;
@@ -102,4 +102,4 @@ struct SeparatingPlaneStage {
   }
 };
 
-}  // namespace exactccd::filter
+}  // namespace exactccd::separation

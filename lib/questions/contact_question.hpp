@@ -8,7 +8,9 @@
 #include "exactccd/types.hpp"
 #include "pipeline/outcome.hpp"
 
-namespace exactccd::pipeline {
+namespace exactccd::questions {
+
+using pipeline::Question;
 
 /// The contact question (question.params.min_distance == 0, tmax in (0, 1]) of a vertex-face
 /// query through the contact stages, counted in `counters` (may be null): the tightest TOI in
@@ -19,13 +21,4 @@ std::optional<TimeInterval> contact_question(const VertexFaceQuery& q, const Que
 /// See contact_question(const VertexFaceQuery&, const Question&, StageCounters*).
 std::optional<TimeInterval> contact_question(const EdgeEdgeQuery& q, const Question& question, StageCounters* counters);
 
-/// The TOI restricted to [0, tmax]: the exact time t lies in [lo, hi] (lo == hi, or lo < t < hi
-/// with no double between them), so for a double tmax, t <= tmax iff hi <= tmax (or lo <= tmax
-/// when lo == hi == t).
-inline std::optional<TimeInterval> cut(const std::optional<TimeInterval>& t, double tmax) {
-  if (!t) return t;
-  const bool within = t->lo == t->hi ? t->lo <= tmax : t->hi <= tmax;
-  return within ? t : std::nullopt;
-}
-
-}  // namespace exactccd::pipeline
+}  // namespace exactccd::questions

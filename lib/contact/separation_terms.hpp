@@ -21,7 +21,7 @@
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
 
-namespace exactccd::separation {
+namespace exactccd::contact {
 
 /// Every term's polynomials are stored with the largest degree (6).
 template <class NT>
@@ -147,4 +147,4 @@ NT distance_at(const kinds::Feature& f, const std::array<Vec3T<NT>, P>& at, cons
   return value;
 }
 
-}  // namespace exactccd::separation
+}  // namespace exactccd::contact

@@ -1,24 +1,31 @@
-// The two methods of the library as stage lists of the one protocol (pipeline/outcome.hpp,
-// docs/design.md 4b.3 and 5): every question's stage order reads in one function here, or in
-// contact_question.cpp for the contact question of vertex-face and edge-edge queries.
+// The two methods of the library for linear motion as stage lists of the one protocol
+// (pipeline/outcome.hpp, docs/design.md 4b.3 and 5): every question's stage order reads in one
+// function here, or in contact_question.cpp for the contact question of vertex-face and
+// edge-edge queries.
 // Included by the entry point (api/entry_point.cpp), which instantiates them for every kind.
 #pragma once
 
 #include <optional>
 #include <type_traits>
 
+#include "contact/separation_terms.hpp"
+#include "exact/exact_ccd.hpp"
 #include "exactccd/stats.hpp"
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
-#include "pipeline/contact_question.hpp"
-#include "pipeline/exact_stages.hpp"
+#include "pipeline/contact_probe.hpp"
 #include "pipeline/outcome.hpp"
 #include "pipeline/run_stages.hpp"
+#include "questions/contact_question.hpp"
+#include "separation/exact_separation.hpp"
 #include "separation/separating_direction.hpp"
-#include "separation/separation_terms.hpp"
 #include "separation/separation_walk.hpp"
 
-namespace exactccd::pipeline {
+namespace exactccd::questions {
+
+using pipeline::Counter;
+using pipeline::Outcome;
+using pipeline::Work;
 
 /// The kinds whose contact question has stages of its own (kinds::HasContactStages: the volume
 /// filter and the contact rule of lib/contact): vertex-face and edge-edge.
@@ -35,7 +42,7 @@ auto as_contact_query(const Query& q) {
   static_assert(kinds::HasContactStages<ContactKind>::value, "a kind's contact question needs contact stages");
   constexpr int P = Kind::points;
   constexpr int C = ContactKind::points;
-  const auto x = separation::points3<double>(q);  // 2D points at z = 0
+  const auto x = contact::points3<double>(q);  // 2D points at z = 0
   std::array<Vec3, 2 * C> e;
   for (int at = 0; at < 2; ++at)
     for (int i = 0; i < C; ++i) e[at * C + i] = x[at * P + Kind::contact_points[i]];
@@ -64,32 +71,27 @@ struct ContactOfEmbeddingStage {
   }
 };
 
-/// The minimum-separation question, for the answer alone (no TOI asked): touching within
-/// [0, tmax] is being within d, and the contact stages decide most touching pairs far more
-/// cheaply than the separation walk. A collision is counted at the contact stage that found it
-/// (its TOI t0 bounds the earliest time within d from above: [0, hi] encloses it); otherwise
-/// nothing is counted, and GMP or CGAL use is handed over (used_gmp: the deciding stage then
-/// counts as `integer`; the fixed-width integer stage allocates nothing and does not count).
-struct ContactProbeStage {
-  static constexpr Counter counter = nullptr;  ///< counts for itself (above)
-  /// The probe, for the answer alone.
+/// The contact question of a query of any kind (contact_of_any_kind) for the minimum-separation
+/// question's contact probe (pipeline/contact_probe.hpp): it always decides, and hands over
+/// GMP use through the counters.
+struct ContactOfAnyKind {
+  /// The contact question's answer as an Outcome.
   template <class Query>
-  Outcome operator()(Work<Query>& work) const {
-    if (work.question.want_toi) return Outcome::undecided();
-    StageCounters probe;
-    const auto touch = contact_of_any_kind(work.query(), Question{{0.0, work.question.params.tmax}, false}, &probe);
-    if (touch) {
-      if (work.counters) *work.counters += probe;
-      return Outcome::collides(TimeInterval{0.0, touch->hi});
-    }
-    work.findings.used_gmp = probe.integer + probe.exact > 0;
-    return Outcome::undecided();
+  Outcome operator()(const Query& q, const Question& question, StageCounters* counters, pipeline::Findings&) const {
+    const auto toi = contact_of_any_kind(q, question, counters);
+    return toi ? Outcome::collides(toi) : Outcome::separate();
   }
 };
 
 /// A query of any kind by the filtered method (the question validated by the entry point):
 /// certified floating-point stages first, the exact path last, each query counted at the stage
-/// deciding it (in `counters`, may be null).
+/// deciding it (in `counters`, may be null). Findings (pipeline/outcome.hpp) in the
+/// minimum-separation list: used_gmp is written by the contact probe (GMP or CGAL in the contact
+/// question it asked) and by SeparationWalkStage (an exact sign in integers, the exact plane
+/// test), and read by SeparationWalkStage when it decides (counted `integer`); use is written by
+/// SeparationWalkStage (the feature pairs no direction keeps apart) and read by
+/// ExactSeparationStage (the exact path leaves the others out). The contact question's own
+/// findings are its list's (contact_question.cpp).
 template <class Query>
 std::optional<TimeInterval> filtered_method(const Query& q, const Question& question, StageCounters* counters) {
   if (question.params.min_distance == 0) {  // the contact question
@@ -102,10 +104,10 @@ std::optional<TimeInterval> filtered_method(const Query& q, const Question& ques
   }
   Work<Query> work{q, question, counters};  // the minimum-separation question
   return run_stages(work,
-                    separation::SeparatingDirectionStage{},  // a direction keeps them > d apart
-                    ContactProbeStage{},                     // answer alone: touching is within d
-                    separation::SeparationWalkStage{},       // the terms over time cells, intervals
-                    ExactSeparationStage{});                 // CGAL's algebraic kernel: always decides
+                    separation::SeparatingDirectionStage{},       // a direction keeps them > d apart
+                    pipeline::contact_probe(ContactOfAnyKind{}),  // answer alone: touching is within d
+                    separation::SeparationWalkStage{},            // the terms over time cells, intervals
+                    separation::ExactSeparationStage{});          // CGAL's algebraic kernel: always decides
 }
 
 /// A query of any kind by the exact method (GMP and CGAL throughout; not counted): the contact
@@ -116,11 +118,11 @@ std::optional<TimeInterval> exact_method(const Query& q, const Question& questio
   if constexpr (has_contact_stages<Query>) {
     if (question.params.min_distance == 0) {
       Work<Query> work{q, {question.params, question.want_toi || question.params.tmax < 1}, nullptr};
-      return cut(run_stages(work, ExactContactStage{}), question.params.tmax);
+      return pipeline::cut(run_stages(work, exact::ExactContactStage{}), question.params.tmax);
     }
   }
   Work<Query> work{q, question, nullptr};
-  return run_stages(work, ExactSeparationStage{});
+  return run_stages(work, separation::ExactSeparationStage{});
 }
 
-}  // namespace exactccd::pipeline
+}  // namespace exactccd::questions

@@ -1,5 +1,5 @@
 // The interval stage of the rigid minimum-separation question (d > 0; docs/design.md, 9.4), the
-// walk of separation/interval_separation.hpp on the rigid model's terms. On the normalized
+// walk of separation/separation_walk.hpp on the rigid model's terms. On the normalized
 // query, in interval arithmetic, the feature-pair terms (separation_terms.hpp) of the scaled
 // positions (interval_frame.hpp; d D(t) in place of d: each term is the true one times a
 // positive power of D, 9.1) are evaluated
@@ -15,28 +15,26 @@
 //     and f' of certain sign over the cell, f has exactly one root t*, where the term holds, every
 //     earlier time being free of contact (earlier cells excluded, f > 0 before t* in this one):
 //     t* is the TOI (4b.2), narrowed to adjacent doubles by f's exact signs at doubles
-//     (intervals, else double-double, else GMP: sign_at.hpp). Without the TOI asked, that cell, or
+//     (intervals, else double-double, else GMP: sign_at.hpp; numeric/root_narrowing.hpp). Without the TOI asked, that cell, or
 //     a term certainly holding at a cell's midpoint, ends the walk: a collision.
 //  3. Every cell excluded: no collision. Anything else: undecided (the exact path answers).
-#include "rigid/separation_walk.hpp"
+#include "rigid/rigid_separation_walk.hpp"
 
-#include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
-#include <vector>
 
 #include "kinds/primitive_kinds.hpp"
+#include "numeric/root_narrowing.hpp"
 #include "rigid/direction_stage.hpp"
 #include "rigid/interval_frame.hpp"
 #include "rigid/positions.hpp"
 #include "rigid/sign_at.hpp"
-#include "separation/separation_terms.hpp"
+#include "contact/separation_terms.hpp"
 
 namespace exactccd::rigid {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using pipeline::Outcome;
 
 /// A term's polynomials' values (f first, then its g) at a time or over a cell.
 template <class R>
@@ -55,7 +53,7 @@ std::array<TermValues<R>, Kind::features.size()> terms_of(const std::array<Vec3T
   const R dd = dD * dD;
   for (std::size_t k = 0; k < Kind::features.size(); ++k) {
     if (!(open >> k & 1)) continue;
-    separation::feature_condition(Kind::features[k], rel, dd, [&](const R& f, const auto&... g) {
+    contact::feature_condition(Kind::features[k], rel, dd, [&](const R& f, const auto&... g) {
       out[k].value[0] = f;
       int i = 1;
       ((out[k].value[i++] = g), ...);
@@ -66,38 +64,38 @@ std::array<TermValues<R>, Kind::features.size()> terms_of(const std::array<Vec3T
 }
 
 template <class Query>
-class SeparationWalk {
+class RigidSeparationWalk {
  public:
-  using Kind = kind_of<Query>;
+  using Kind = kinds::kind_of<Query>;
   static constexpr int kMaxDepth = 40;
   /// The most cells one walk examines: a term within rounding of holding over a long stretch
   /// (a distance staying near d) would otherwise split every cell down to the depth limit.
   static constexpr int kMaxCells = 2048;
 
-  SeparationWalk(const Query& q, const DirectionFrame<Query>& directions, const IntervalFrame<Query>& frame, double d,
-                 double tmax, bool want_toi)
-      : q_(q), directions_(directions), d_(d), tmax_(tmax), want_toi_(want_toi), frame_(frame) {}
+  RigidSeparationWalk(const Query& q, const DirectionFrame<Query>& directions, const IntervalFrame<Query>& frame,
+                      double d, double tmax, bool want_toi, bool& used_gmp)
+      : q_(q), directions_(directions), d_(d), tmax_(tmax), want_toi_(want_toi), frame_(frame), used_gmp_(used_gmp) {}
 
-  StageResult run() {
+  Outcome run() {
     const std::uint32_t all = terms_not_kept_apart();
-    if (all == 0) return StageResult::separate(used_gmp_);
-    if (const std::optional<StageResult> at_zero = decide_zero(all)) return *at_zero;
+    if (all == 0) return Outcome::separate();
+    if (const std::optional<Outcome> at_zero = decide_zero(all)) return *at_zero;
     // 2. The cells in time order (a stack of right halves).
     std::array<Cell, kMaxDepth + 2> stack;
     int top = 0;
     stack[top++] = {0.0, tmax_, 0, all};
     for (int cells = 1; top > 0; ++cells) {
-      if (cells > kMaxCells) return StageResult::undecided(used_gmp_);
+      if (cells > kMaxCells) return Outcome::undecided();
       const Cell cell = stack[--top];
       std::uint32_t open = 0;
-      if (const std::optional<StageResult> r = examine(cell, open)) return *r;
+      if (const std::optional<Outcome> r = examine(cell, open)) return *r;
       if (open == 0) continue;  // free of contact
       const double m = cell.a + (cell.b - cell.a) / 2;
-      if (cell.depth >= kMaxDepth || !(cell.a < m && m < cell.b)) return StageResult::undecided(used_gmp_);
+      if (cell.depth >= kMaxDepth || !(cell.a < m && m < cell.b)) return Outcome::undecided();
       stack[top++] = {m, cell.b, cell.depth + 1, open};  // the right half after the left one
       stack[top++] = {cell.a, m, cell.depth + 1, open};
     }
-    return StageResult::separate(used_gmp_);  // 3. every cell excluded
+    return Outcome::separate();  // 3. every cell excluded
   }
 
  private:
@@ -120,26 +118,26 @@ class SeparationWalk {
 
   /// 1. t = 0: a term certainly holding is a collision at 0; unless every term certainly fails
   /// there, undecided; otherwise nothing (the walk goes on).
-  std::optional<StageResult> decide_zero(std::uint32_t all) {
+  std::optional<Outcome> decide_zero(std::uint32_t all) {
     const auto at0 = terms_at(0.0, all);
     bool all_fail = true;
     for (std::size_t k = 0; k < Kind::features.size(); ++k) {
       if (!(all >> k & 1)) continue;
-      if (holds(at0[k])) return StageResult::collides({0.0, 0.0}, used_gmp_);
+      if (holds(at0[k])) return Outcome::collides(TimeInterval{0.0, 0.0});
       all_fail = all_fail && fails(at0[k]);
     }
-    if (!all_fail) return StageResult::undecided(used_gmp_);
+    if (!all_fail) return Outcome::undecided();
     return std::nullopt;
   }
 
   /// 2. One cell: a decision (a collision found, or its TOI narrowed), or nothing with `open` the
   /// terms not excluded on it (0: the cell is free of contact).
-  std::optional<StageResult> examine(const Cell& cell, std::uint32_t& open) {
+  std::optional<Outcome> examine(const Cell& cell, std::uint32_t& open) {
     const double m = cell.a + (cell.b - cell.a) / 2;
     const auto mid = terms_at(m, cell.open);
     if (!want_toi_) {  // a term certainly holding at the midpoint: a collision there or before
       for (std::size_t k = 0; k < Kind::features.size(); ++k)
-        if ((cell.open >> k & 1) && holds(mid[k])) return StageResult::collides({0.0, m}, used_gmp_);
+        if ((cell.open >> k & 1) && holds(mid[k])) return Outcome::collides(TimeInterval{0.0, m});
     }
     const auto over = terms_over(cell.a, cell.b, m, mid, cell.open);
     int alive = -1, alive_count = 0;
@@ -150,7 +148,7 @@ class SeparationWalk {
         ++alive_count;
       }
     if (alive_count == 1 && single_root(over[static_cast<std::size_t>(alive)], static_cast<std::size_t>(alive), cell)) {
-      if (!want_toi_) return StageResult::collides({cell.a, cell.b}, used_gmp_);
+      if (!want_toi_) return Outcome::collides(TimeInterval{cell.a, cell.b});
       return narrow(Kind::features[static_cast<std::size_t>(alive)], cell.a, cell.b);
     }
     return std::nullopt;
@@ -206,27 +204,22 @@ class SeparationWalk {
     return false;
   }
 
-  /// f's exact sign at the double t: intervals, else double-double or GMP.
+  /// f's exact sign at the double t: intervals (a certain nonzero sign), else double-double or GMP.
   int sign_at(const kinds::Feature& f, std::size_t k, double t) {
-    const Interval v = terms_at(t, std::uint32_t{1} << k)[k].value[0];
-    if (v.inf() > 0) return 1;
-    if (v.sup() < 0) return -1;
+    const int s = numeric::certain_sign(terms_at(t, std::uint32_t{1} << k)[k].value[0]);
+    if (s != 0) return s;
     const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
     return distance_sign_at(q_, f, d_, t, used_gmp_);
   }
 
-  /// The tightest double interval around f's single root in (a, b) (f(a) > 0 > f(b)).
-  StageResult narrow(const kinds::Feature& f, double a, double b) {
+  /// The tightest double interval around f's single root in (a, b) (f(a) > 0 > f(b)): f's exact
+  /// signs at doubles, by the one narrowing (numeric/root_narrowing.hpp).
+  Outcome narrow(const kinds::Feature& f, double a, double b) {
     std::size_t k = 0;
     while (&Kind::features[k] != &f) ++k;
-    while (std::nextafter(a, kInf) < b) {
-      double m = a + (b - a) / 2;
-      if (!(a < m && m < b)) m = std::nextafter(a, kInf);
-      const int s = sign_at(f, k, m);
-      if (s == 0) return StageResult::collides({m, m}, used_gmp_);
-      (s > 0 ? a : b) = m;
-    }
-    return StageResult::collides({a, b}, used_gmp_);
+    numeric::Bisection halving;
+    const auto sign = [&](double t) { return numeric::SignAt{sign_at(f, k, t)}; };
+    return Outcome::collides(numeric::tightest_enclosure(a, b, 1, a, sign, halving));
   }
 
   const Query& q_;
@@ -234,18 +227,20 @@ class SeparationWalk {
   double d_, tmax_;
   bool want_toi_;
   const IntervalFrame<Query>& frame_;
-  bool used_gmp_ = false;
+  bool& used_gmp_;
 };
 
 }  // namespace
 
-StageResult separation_walk(const RigidVertexFaceQuery& q, const DirectionFrame<RigidVertexFaceQuery>& directions,
-                            const IntervalFrame<RigidVertexFaceQuery>& frame, double d, double tmax, bool want_toi) {
-  return SeparationWalk<RigidVertexFaceQuery>(q, directions, frame, d, tmax, want_toi).run();
+Outcome rigid_separation_walk(const RigidVertexFaceQuery& q, const DirectionFrame<RigidVertexFaceQuery>& directions,
+                        const IntervalFrame<RigidVertexFaceQuery>& frame, double d, double tmax, bool want_toi,
+                        bool& used_gmp) {
+  return RigidSeparationWalk<RigidVertexFaceQuery>(q, directions, frame, d, tmax, want_toi, used_gmp).run();
 }
-StageResult separation_walk(const RigidEdgeEdgeQuery& q, const DirectionFrame<RigidEdgeEdgeQuery>& directions,
-                            const IntervalFrame<RigidEdgeEdgeQuery>& frame, double d, double tmax, bool want_toi) {
-  return SeparationWalk<RigidEdgeEdgeQuery>(q, directions, frame, d, tmax, want_toi).run();
+Outcome rigid_separation_walk(const RigidEdgeEdgeQuery& q, const DirectionFrame<RigidEdgeEdgeQuery>& directions,
+                        const IntervalFrame<RigidEdgeEdgeQuery>& frame, double d, double tmax, bool want_toi,
+                        bool& used_gmp) {
+  return RigidSeparationWalk<RigidEdgeEdgeQuery>(q, directions, frame, d, tmax, want_toi, used_gmp).run();
 }
 
 }  // namespace exactccd::rigid

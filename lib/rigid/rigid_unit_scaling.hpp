@@ -14,14 +14,17 @@
 #include <optional>
 
 #include "exactccd/rigid.hpp"
+#include "exactccd/stats.hpp"
 #include "numeric/power_of_two.hpp"
+#include "pipeline/outcome.hpp"
+#include "rigid/exact_rigid.hpp"
 #include "rigid/rigid_layout.hpp"
 
 namespace exactccd::rigid {
 
 /// The query and d scaled as in the file comment, or nullopt when a scaling is inexact.
 template <class Query>
-std::optional<std::pair<Query, double>> normalized(const Query& query, double d) {
+std::optional<std::pair<Query, double>> unit_scaled(const Query& query, double d) {
   Query q = query;
   bool exact = true;
   const auto scaled = [&](double v, const numeric::UnitScale& unit) {
@@ -59,5 +62,22 @@ std::optional<std::pair<Query, double>> normalized(const Query& query, double d)
   if (!exact || !std::isfinite(scaled_d)) return std::nullopt;
   return std::pair{q, scaled_d};
 }
+
+/// The first step of both rigid questions' stage lists: the Work's query and d unit scaled
+/// (unit_scaled) into its replacement and question, for every later stage; where a scaling is
+/// inexact, the exact path answers at once (counted `exact`).
+struct RigidUnitScalingStage {
+  static constexpr pipeline::Counter counter = &StageCounters::exact;  ///< only when it answers exactly
+  /// Scales work.query() and the question's d; undecided unless the scaling is inexact.
+  template <class Query>
+  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+    const auto scaled = unit_scaled(work.query(), work.question.params.min_distance);
+    if (!scaled) return exact_outcome(work);  // an inexact scaling
+    work.replacement() = scaled->first;
+    work.use_replacement();
+    work.question.params.min_distance = scaled->second;
+    return pipeline::Outcome::undecided();
+  }
+};
 
 }  // namespace exactccd::rigid

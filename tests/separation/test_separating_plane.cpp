@@ -1,4 +1,4 @@
-// The contact question's separating-plane stage (filter/separating_plane.hpp) and the per-end
+// The contact question's separating-plane stage (separation/separating_plane.hpp) and the per-end
 // gap test it rests on (separation::gap_certified_at_each_end):
 //  - the bound: configurations at distance exactly d at t0 and at t1 (built from integers, 53-bit
 //    coordinates so that projections round; at scales from the subnormal range to 2^960, in
@@ -19,10 +19,10 @@
 #include <string>
 
 #include "exactccd/exactccd.hpp"
-#include "filter/separating_plane.hpp"
+#include "separation/separating_plane.hpp"
 #include "filter/volume_exclusion.hpp"
 #include "kinds/primitive_kinds.hpp"
-#include "pipeline/contact_question.hpp"
+#include "questions/contact_question.hpp"
 #include "separation/separating_direction.hpp"
 
 namespace exactccd {
@@ -150,11 +150,11 @@ TEST(SeparatingPlaneStage, NeverSeparatesACollidingQuery) {
     bool apart = false, collides = false;
     if (vertex_face) {
       const auto q = from_rows<VertexFaceQuery>(r);
-      apart = filter::separated_by_plane(q);
+      apart = separation::separated_by_plane(q);
       collides = vertex_face_ccd(q, Method::exact);
     } else {
       const auto q = from_rows<EdgeEdgeQuery>(r);
-      apart = filter::separated_by_plane(q);
+      apart = separation::separated_by_plane(q);
       collides = edge_edge_ccd(q, Method::exact);
     }
     separated += apart;
@@ -203,11 +203,11 @@ TEST(SeparatingPlaneStage, DecidesNearlyCoplanarClothNeighbours) {
     if (vertex_face) {
       const auto q = from_rows<VertexFaceQuery>(r);
       excluded = filter::volume_excluded(q);
-      answer = pipeline::contact_question(q, pipeline::Question{}, &counters);
+      answer = questions::contact_question(q, pipeline::Question{}, &counters);
     } else {
       const auto q = from_rows<EdgeEdgeQuery>(r);
       excluded = filter::volume_excluded(q);
-      answer = pipeline::contact_question(q, pipeline::Question{}, &counters);
+      answer = questions::contact_question(q, pipeline::Question{}, &counters);
     }
     ASSERT_FALSE(answer) << "query " << n << ": the neighbours never touch";
     if (excluded) continue;

@@ -1,4 +1,4 @@
-// The exact power-of-two normalisation of a query (filter/normalize.hpp, scale_to_unit) against
+// The exact power-of-two normalisation of a query (filter/unit_scaling.hpp, scale_to_unit) against
 // the C library's std::ldexp, coordinate by coordinate: the same scaled query when every
 // coordinate scales exactly, `false` with the output untouched when one would round (a tiny
 // coordinate pushed into the subnormal range), over the whole exponent range (scaling up and
@@ -10,7 +10,7 @@
 #include <random>
 
 #include "exactccd/exactccd.hpp"
-#include "filter/normalize.hpp"
+#include "filter/unit_scaling.hpp"
 
 namespace exactccd {
 namespace {
