@@ -123,10 +123,9 @@ using KeptArena = Kept<tbb::task_arena>;
 /// thread alone when threads <= 1; in the calling thread's task arena when that arena has at
 /// most `threads` slots (composing with a caller's TBB loops); else in `kept` (an arena of
 /// `threads` slots) when given and not lent to another call, else in a task arena of `threads`
-/// slots made for this call. The
-/// calling thread runs f in every case (the arena's reserved slot is free: one call per
-/// arena), under the default floating-point environment and this thread's cancellation flag;
-/// f's exception propagates.
+/// slots made for this call. The calling thread runs f in every case (the arena's reserved slot
+/// is free: one call per arena), under the default floating-point environment and this thread's
+/// cancellation flag; f's exception propagates.
 template <class F>
 auto with_threads(unsigned threads, F&& f, KeptArena* kept = nullptr) -> decltype(f()) {
   if (threads <= 1 || tbb::this_task_arena::max_concurrency() <= static_cast<int>(threads)) return f();
