@@ -45,7 +45,7 @@ void check_references(std::string_view input) {
         const std::string part = words[w].substr(start, slash - start);
         start = slash + 1;
         if (part.empty()) continue;
-        const long long r = std::stoll(part);  // an accepted file's references are integers
+        const long long r = accepted_integer(part, true, input);
         require(r > 0 ? r <= total[k] : -r <= so_far[k],
                 std::string("an accepted reference ") + words[w] + " names no " + kinds[k] + " line", input);
       }

@@ -19,8 +19,10 @@ void check_counts(const io::TriangleMesh& mesh, std::string_view input) {
     for (const std::string& w : line)
       if (words.size() < 3) words.push_back(w);
   require(words.size() == 3, "an accepted OFF file without its counts", input);
-  require(std::stoull(words[1]) == mesh.vertices.size(), "vertices read != the count " + words[1], input);
-  require(std::stoull(words[2]) <= mesh.triangles.size(), "fewer triangles than the faces " + words[2], input);
+  require(accepted_integer(words[1], false, input) == static_cast<long long>(mesh.vertices.size()),
+          "vertices read != the count " + words[1], input);
+  require(accepted_integer(words[2], false, input) <= static_cast<long long>(mesh.triangles.size()),
+          "fewer triangles than the faces " + words[2], input);
 }
 
 const MeshFormatUnderTest& off_format() {

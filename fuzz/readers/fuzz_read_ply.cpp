@@ -21,8 +21,10 @@ void check_counts(const io::TriangleMesh& mesh, std::string_view input) {
     if (words.size() == 3 && words[0] == "element" && words[1] == "vertex") vertices = words[2];
     if (words.size() == 3 && words[0] == "element" && words[1] == "face") faces = words[2];
   }
-  require(std::stoull(vertices) == mesh.vertices.size(), "vertices read != the header's count " + vertices, input);
-  require(std::stoull(faces) <= mesh.triangles.size(), "fewer triangles than the header's faces " + faces, input);
+  require(accepted_integer(vertices, false, input) == static_cast<long long>(mesh.vertices.size()),
+          "vertices read != the header's count " + vertices, input);
+  require(accepted_integer(faces, false, input) <= static_cast<long long>(mesh.triangles.size()),
+          "fewer triangles than the header's faces " + faces, input);
 }
 
 MeshWriter ply_writer(PlyEncoding encoding) {

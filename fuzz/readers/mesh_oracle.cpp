@@ -1,5 +1,6 @@
 #include "fuzz/readers/mesh_oracle.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -65,6 +66,20 @@ void check_mesh_invariants(const io::TriangleMesh& mesh, std::string_view input)
 bool same_mesh(const io::TriangleMesh& a, const io::TriangleMesh& b) {
   if (a.vertices.size() != b.vertices.size() || a.triangles != b.triangles) return false;
   return a.vertices.empty() || std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(Vec3)) == 0;
+}
+
+long long accepted_integer(const std::string& word, bool negative_allowed, std::string_view input) {
+  const bool negative = !word.empty() && word[0] == '-';
+  const std::size_t first = !word.empty() && (word[0] == '+' || negative) ? 1 : 0;
+  const std::size_t significant = std::min(word.find_first_not_of('0', first), word.size());
+  bool ok = first < word.size() && word.size() - significant <= 18 && (!negative || negative_allowed);
+  long long value = 0;
+  for (std::size_t i = first; ok && i < word.size(); ++i) {
+    ok = std::isdigit(static_cast<unsigned char>(word[i])) != 0;
+    value = value * 10 + (word[i] - '0');
+  }
+  require(ok, "an accepted file holds the count or index '" + word + "', which is no such number", input);
+  return negative ? -value : value;
 }
 
 std::vector<std::vector<std::string>> words_per_line(std::string_view text, char comment) {

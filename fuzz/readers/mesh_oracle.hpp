@@ -47,6 +47,11 @@ void check_mesh_invariants(const io::TriangleMesh& mesh, std::string_view input)
 /// Whether two meshes are the same: vertices bit for bit (the sign of zero too), same triangles.
 bool same_mesh(const io::TriangleMesh& a, const io::TriangleMesh& b);
 
+/// A count or index word of an accepted file, read by the target itself: an optional sign ('+',
+/// or '-' when `negative_allowed`) and decimal digits, nothing else; fail() on anything else (a
+/// reader accepted a malformed number).
+long long accepted_integer(const std::string& word, bool negative_allowed, std::string_view input);
+
 /// The whitespace-separated words of each line of `text` (a UTF-8 byte order mark at the start
 /// dropped, everything from `comment` on dropped when it is not '\0'): the targets' own count of
 /// what a header announces, independent of the readers.
