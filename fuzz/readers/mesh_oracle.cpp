@@ -82,6 +82,37 @@ long long accepted_integer(const std::string& word, bool negative_allowed, std::
   return negative ? -value : value;
 }
 
+bool is_number(const std::string& word) {
+  std::size_t i = word.empty() || (word[0] != '+' && word[0] != '-') ? 0 : 1;
+  std::string rest = word.substr(i);
+  std::transform(rest.begin(), rest.end(), rest.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (rest == "inf" || rest == "infinity" || rest == "nan") return true;
+  if (rest.compare(0, 4, "nan(") == 0 && rest.back() == ')')  // nan(n-char-sequence)
+    return std::all_of(rest.begin() + 4, rest.end() - 1, [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < word.size() && std::isdigit(static_cast<unsigned char>(word[i]))) ++i;
+    return i - from;
+  };
+  std::size_t mantissa = digits();
+  if (i < word.size() && word[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return false;
+  if (i < word.size() && (word[i] == 'e' || word[i] == 'E')) {
+    ++i;
+    if (i < word.size() && (word[i] == '+' || word[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == word.size();
+}
+
+void require_numbers(const std::vector<std::string>& words, std::size_t first, std::string_view input) {
+  for (std::size_t i = first; i < words.size(); ++i)
+    require(is_number(words[i]), "an accepted file holds '" + words[i] + "' where a number belongs", input);
+}
+
 std::vector<std::vector<std::string>> words_per_line(std::string_view text, char comment) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   std::vector<std::vector<std::string>> out(1);
