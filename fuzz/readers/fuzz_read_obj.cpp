@@ -12,13 +12,15 @@
 namespace exactccd::fuzzing {
 namespace {
 
-/// The `v` lines and the triangles of the `f` lines' fans, counted from the words.
+/// The `v` lines and the triangles of the `f` lines' fans, counted from the words, and the
+/// numbers of the v, vt, vn and vp lines.
 void check_counts(const io::TriangleMesh& mesh, std::string_view input) {
   std::size_t vertices = 0, triangles = 0;
   for (const std::vector<std::string>& words : words_per_line(input, '#')) {
     if (words.empty()) continue;
     if (words[0] == "v") ++vertices;
     if (words[0] == "f") triangles += words.size() - 3;
+    if (words[0] == "v" || words[0] == "vt" || words[0] == "vn" || words[0] == "vp") require_numbers(words, 1, input);
   }
   require(mesh.vertices.size() == vertices, "vertices read != the v lines", input);
   require(mesh.triangles.size() == triangles, "triangles read != the f lines' fans", input);
@@ -45,7 +47,7 @@ void check_references(std::string_view input) {
         const std::string part = words[w].substr(start, slash - start);
         start = slash + 1;
         if (part.empty()) continue;
-        const long long r = std::stoll(part);  // an accepted file's references are integers
+        const long long r = accepted_integer(part, true, input);
         require(r > 0 ? r <= total[k] : -r <= so_far[k],
                 std::string("an accepted reference ") + words[w] + " names no " + kinds[k] + " line", input);
       }

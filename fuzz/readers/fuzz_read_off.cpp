@@ -12,15 +12,18 @@
 namespace exactccd::fuzzing {
 namespace {
 
-/// The counts: the two words after the keyword (the first word of the first line with words).
+/// The counts: the two words after the keyword (the first word of the first line with words);
+/// every word after the keyword is a number.
 void check_counts(const io::TriangleMesh& mesh, std::string_view input) {
   std::vector<std::string> words;
   for (const std::vector<std::string>& line : words_per_line(input, '#'))
-    for (const std::string& w : line)
-      if (words.size() < 3) words.push_back(w);
-  require(words.size() == 3, "an accepted OFF file without its counts", input);
-  require(std::stoull(words[1]) == mesh.vertices.size(), "vertices read != the count " + words[1], input);
-  require(std::stoull(words[2]) <= mesh.triangles.size(), "fewer triangles than the faces " + words[2], input);
+    words.insert(words.end(), line.begin(), line.end());
+  require_numbers(words, 1, input);
+  require(words.size() >= 3, "an accepted OFF file without its counts", input);
+  require(accepted_integer(words[1], false, input) == static_cast<long long>(mesh.vertices.size()),
+          "vertices read != the count " + words[1], input);
+  require(accepted_integer(words[2], false, input) <= static_cast<long long>(mesh.triangles.size()),
+          "fewer triangles than the faces " + words[2], input);
 }
 
 const MeshFormatUnderTest& off_format() {

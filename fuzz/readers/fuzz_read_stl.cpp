@@ -1,7 +1,8 @@
 // libFuzzer target: io::read_stl (binary and ASCII; and io::read_mesh on a .stl file) on
 // arbitrary bytes. Besides the checks of mesh_oracle.hpp (the round trips write ASCII STL, and
 // binary STL when every coordinate is a float): an accepted binary file (84 + 50 n bytes) has n
-// triangles, an accepted ASCII file one per `facet` line (the target's own count).
+// triangles, an accepted ASCII file one per `facet` line and numbers (is_number) in its facet
+// and vertex lines (the target's own reading).
 // docs/fuzzing.md, section 5.
 #include <cstddef>
 #include <cstdint>
@@ -23,8 +24,11 @@ void check_counts(const io::TriangleMesh& mesh, std::string_view input) {
     }
   }
   std::size_t facets = 0;
-  for (const std::vector<std::string>& words : words_per_line(input, '\0'))
+  for (const std::vector<std::string>& words : words_per_line(input, '\0')) {
     if (!words.empty() && words[0] == "facet") ++facets;
+    if (!words.empty() && words[0] == "facet") require_numbers(words, 2, input);
+    if (!words.empty() && words[0] == "vertex") require_numbers(words, 1, input);
+  }
   require(mesh.triangles.size() == facets, "triangles read != the facet lines", input);
 }
 

@@ -1,5 +1,6 @@
 #include "fuzz/readers/mesh_oracle.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -65,6 +66,51 @@ void check_mesh_invariants(const io::TriangleMesh& mesh, std::string_view input)
 bool same_mesh(const io::TriangleMesh& a, const io::TriangleMesh& b) {
   if (a.vertices.size() != b.vertices.size() || a.triangles != b.triangles) return false;
   return a.vertices.empty() || std::memcmp(a.vertices.data(), b.vertices.data(), a.vertices.size() * sizeof(Vec3)) == 0;
+}
+
+long long accepted_integer(const std::string& word, bool negative_allowed, std::string_view input) {
+  const bool negative = !word.empty() && word[0] == '-';
+  const std::size_t first = !word.empty() && (word[0] == '+' || negative) ? 1 : 0;
+  const std::size_t significant = std::min(word.find_first_not_of('0', first), word.size());
+  bool ok = first < word.size() && word.size() - significant <= 18 && (!negative || negative_allowed);
+  long long value = 0;
+  for (std::size_t i = first; ok && i < word.size(); ++i) {
+    ok = std::isdigit(static_cast<unsigned char>(word[i])) != 0;
+    value = value * 10 + (word[i] - '0');
+  }
+  require(ok, "an accepted file holds the count or index '" + word + "', which is no such number", input);
+  return negative ? -value : value;
+}
+
+bool is_number(const std::string& word) {
+  std::size_t i = word.empty() || (word[0] != '+' && word[0] != '-') ? 0 : 1;
+  std::string rest = word.substr(i);
+  std::transform(rest.begin(), rest.end(), rest.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (rest == "inf" || rest == "infinity" || rest == "nan") return true;
+  if (rest.compare(0, 4, "nan(") == 0 && rest.back() == ')')  // nan(n-char-sequence)
+    return std::all_of(rest.begin() + 4, rest.end() - 1, [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < word.size() && std::isdigit(static_cast<unsigned char>(word[i]))) ++i;
+    return i - from;
+  };
+  std::size_t mantissa = digits();
+  if (i < word.size() && word[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return false;
+  if (i < word.size() && (word[i] == 'e' || word[i] == 'E')) {
+    ++i;
+    if (i < word.size() && (word[i] == '+' || word[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == word.size();
+}
+
+void require_numbers(const std::vector<std::string>& words, std::size_t first, std::string_view input) {
+  for (std::size_t i = first; i < words.size(); ++i)
+    require(is_number(words[i]), "an accepted file holds '" + words[i] + "' where a number belongs", input);
 }
 
 std::vector<std::vector<std::string>> words_per_line(std::string_view text, char comment) {

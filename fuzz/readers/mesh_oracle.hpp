@@ -47,6 +47,20 @@ void check_mesh_invariants(const io::TriangleMesh& mesh, std::string_view input)
 /// Whether two meshes are the same: vertices bit for bit (the sign of zero too), same triangles.
 bool same_mesh(const io::TriangleMesh& a, const io::TriangleMesh& b);
 
+/// A count or index word of an accepted file, read by the target itself: an optional sign ('+',
+/// or '-' when `negative_allowed`) and decimal digits, nothing else; fail() on anything else (a
+/// reader accepted a malformed number).
+long long accepted_integer(const std::string& word, bool negative_allowed, std::string_view input);
+
+/// Whether `word` is a number as the text formats write them: one optional sign, digits with an
+/// optional decimal point and exponent (1, -2.5, .5, 5., 1e-3, +4E+2), or inf, infinity, nan,
+/// nan(chars) (any case; the readers refuse them where a value must be finite). The target's own grammar,
+/// against which every number of an accepted file is checked: '+-1', '1..2', '0x10' are none.
+bool is_number(const std::string& word);
+
+/// fail() unless every word of `words` from `first` on is a number (is_number).
+void require_numbers(const std::vector<std::string>& words, std::size_t first, std::string_view input);
+
 /// The whitespace-separated words of each line of `text` (a UTF-8 byte order mark at the start
 /// dropped, everything from `comment` on dropped when it is not '\0'): the targets' own count of
 /// what a header announces, independent of the readers.

@@ -371,6 +371,39 @@ TEST(MeshFormats, OffStartingWithACommentIsOff) {
 // An empty OFF file's error named line 0 (lines are 1-based).
 TEST(MeshFormats, EmptyOffNamesLineOne) { EXPECT_EQ(off_error(""), "m.off:1: empty OFF file"); }
 
+// Found by fuzz_read_off's long run: the readers skipped a leading '+' before std::from_chars,
+// which then read "+-1" as -1 ("OFF\n+-0 0\n" was an empty mesh). A sign after the '+' is no
+// number now, in every field of every text format; "+1" still is 1.
+TEST(MeshFormats, PlusMinusIsNoNumber) {
+  EXPECT_EQ(off_error("OFF\n+-0 0\n"), "m.off:2: expected the counts 'vertices faces [edges]' (non-negative integers)");
+  const std::string off = "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const auto off_with = [&](const std::string& from, const std::string& to) {
+    std::string s = off;
+    s.replace(s.find(from), from.size(), to);
+    return off_error(s);
+  };
+  EXPECT_EQ(off_with("1 0 0", "+-1 0 0"), "m.off:4: coordinate '+-1' is not a number");
+  EXPECT_EQ(off_with("1 0 0", "++1 0 0"), "m.off:4: coordinate '++1' is not a number");
+  EXPECT_EQ(off_with("3 0 1 2", "3 +-0 1 2"), "m.off:6: face vertex index '+-0' is not an integer");
+  EXPECT_EQ(off_with("1 0 0", "+1 +0 -0"), "");
+  const std::string ply_text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty double y\nproperty double z\n"
+                               "property char c\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                               "0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n";
+  const auto ply_with = [&](const std::string& from, const std::string& to) {
+    std::string s = ply_text;
+    s.replace(s.find(from), from.size(), to);
+    return ply_error(s);
+  };
+  EXPECT_EQ(ply_with("1 0 0 1", "+-1 0 0 1"), "m.ply:12: property x: value '+-1' is not a number");
+  EXPECT_EQ(ply_with("1 0 0 1", "1 +-0.5 0 1"), "m.ply:12: property y: value '+-0.5' is not a number");
+  EXPECT_EQ(ply_with("1 0 0 1", "1 0 0 +-1"), "m.ply:12: property c: value '+-1' is not an integer");
+  EXPECT_EQ(ply_with("3 0 1 2", "+-3 0 1 2"), "m.ply:14: the count of list vertex_indices: value '+-3' is not an integer");
+  EXPECT_EQ(ply_with("1 0 0 1", "+1 +0 +0 +1"), "");
+  EXPECT_EQ(stl_error("solid\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex +-1 0 0\nvertex 0 1 0\nendloop\n"
+                      "endfacet\nendsolid\n"),
+            "m.stl:5: coordinate '+-1' is not a number");
+}
+
 // Found by reading: the repeated-vertex check compared every pair of a polygon's vertices.
 TEST(MeshFormats, LargePolygonsAreCheckedForRepeatedVertices) {
   constexpr int kVertices = 50000;

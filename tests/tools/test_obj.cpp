@@ -149,6 +149,13 @@ TEST(Obj, ReferencesToMissingElementsAreErrors) {
             "mesh.obj:5: face vertex 4 out of range (the file has 3 vertices)");
 }
 
+// Found by fuzz_read_off (the same parsing as read_obj's): "+-1" was read as -1.
+TEST(Obj, PlusMinusIsNoNumber) {
+  EXPECT_EQ(error_of("v +-1 0 0\n"), "mesh.obj:1: coordinate '+-1' is not a number");
+  EXPECT_EQ(error_of("v 0 0 0\nvt ++0.5\n"), "mesh.obj:2: coordinate '++0.5' is not a number");
+  EXPECT_EQ(error_of("v +1 0 0\n"), "");
+}
+
 // Found by reading (the fuzz targets' inputs are too short to show it): the check that a face
 // repeats no vertex compared every pair, minutes for a polygon of a million vertices. A
 // polygon of 50 000 vertices is checked in linear-logarithmic time now, with the same answer.

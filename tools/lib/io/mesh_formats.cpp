@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "io/decimal.hpp"
 #include "io/polygon.hpp"
 
 namespace exactccd::io {
@@ -61,7 +62,7 @@ double parse_double(const std::string& token, const std::string& source, std::si
                     bool finite = true) {
   const char* first = token.data();
   const char* last = first + token.size();
-  if (first != last && *first == '+') ++first;
+  first = after_plus_sign(first, last);
   double value = 0;
   const auto [end, error] = std::from_chars(first, last, value);
   if (error == std::errc::result_out_of_range)
@@ -76,7 +77,7 @@ double parse_double(const std::string& token, const std::string& source, std::si
 bool parse_integer(const std::string& token, long long& value) {
   const char* first = token.data();
   const char* last = first + token.size();
-  if (first != last && *first == '+') ++first;
+  first = after_plus_sign(first, last);
   const auto [end, error] = std::from_chars(first, last, value);
   return first != last && error == std::errc() && end == last;
 }
@@ -176,7 +177,7 @@ bool parse_ascii(const std::string& token, PlyType t, PlyValue& v, std::string& 
   if (is_float(t)) {
     const char* first = token.data();
     const char* last = first + token.size();
-    if (first != last && *first == '+') ++first;
+    first = after_plus_sign(first, last);
     std::errc ec;
     const char* end;
     if (t == PlyType::f32) {

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "io/decimal.hpp"
 #include "io/polygon.hpp"
 
 namespace exactccd::io {
@@ -26,7 +27,7 @@ std::vector<std::string> tokens(const std::string& line) {
 double parse_coordinate(const std::string& token, const std::string& source, std::size_t line) {
   const char* first = token.data();
   const char* last = first + token.size();
-  if (first != last && *first == '+') ++first;
+  first = after_plus_sign(first, last);
   double value = 0;
   const auto [end, error] = std::from_chars(first, last, value);
   if (error == std::errc::result_out_of_range)
