@@ -12,6 +12,8 @@
 // Everything here needs upward rounding (CGAL::Protect_FPU_rounding<true>) held by the caller.
 #pragma once
 
+#include <boost/optional.hpp>
+
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -202,7 +204,10 @@ class IntervalFrame {
 /// The interval frame of one normalized query, shared by the stages of its list that read it
 /// (the contact walk, the contact probe's, the separation walk: contact_walk.hpp,
 /// rigid_separation_walk.hpp): built once, on first use, so that splitting the walks into stages
-/// computes nothing twice.
+/// computes nothing twice. Every query of the rigid lists creates one, most never build the frame
+/// (the direction stage decides them): boost::optional, whose empty storage is left
+/// uninitialised, where GCC 12's std::optional zero-fills the frame's 3.7 kB for each query
+/// (a `rep stos` of 460 words: +6.7% instructions on the tumbling-body sets, callgrind).
 template <class Query>
 class SharedIntervalFrame {
  public:
@@ -214,7 +219,7 @@ class SharedIntervalFrame {
   }
 
  private:
-  std::optional<IntervalFrame<Query>> frame_;
+  boost::optional<IntervalFrame<Query>> frame_;
 };
 
 }  // namespace exactccd::rigid
