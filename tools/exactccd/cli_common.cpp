@@ -13,10 +13,13 @@
 #include <cstdio>
 #include <limits>
 #include <exception>
+#include <future>
 #include <mutex>
 #include <system_error>
 #include <thread>
 #include <tuple>
+
+#include <tbb/info.h>
 
 #include "io/input_file.hpp"
 #include "scene/parallel.hpp"
@@ -288,9 +291,27 @@ std::vector<OptionSpec> batch_option_specs() {
                        "the output of the whole run")};
 }
 
+unsigned startable_threads(unsigned threads) {
+  const unsigned wanted = std::min<unsigned>(threads, std::max(1, tbb::info::default_concurrency()));
+  std::promise<void> release;
+  const std::shared_future<void> released = release.get_future().share();
+  std::vector<std::thread> held;  // alive together: the system counts them at once
+  held.reserve(wanted);
+  for (unsigned i = 1; i < wanted; ++i) {
+    try {
+      held.emplace_back([released] { released.wait(); });
+    } catch (const std::system_error&) {
+      break;  // refused (EAGAIN): the ones started so far, and the calling thread
+    }
+  }
+  release.set_value();
+  for (std::thread& t : held) t.join();
+  return held.size() + 1 == wanted ? threads : static_cast<unsigned>(held.size() + 1);
+}
+
 BatchOptions batch_options(const ParsedOptions& options) {
   BatchOptions b;
-  b.threads = scene::resolve_threads(static_cast<unsigned>(options.integer("--threads")));
+  b.threads = startable_threads(scene::resolve_threads(static_cast<unsigned>(options.integer("--threads"))));
   std::tie(b.shard_index, b.shard_count) = options.shard("--shard");
   return b;
 }

@@ -232,6 +232,15 @@ struct BatchOptions {
   std::pair<std::size_t, std::size_t> shard_range(std::size_t total) const;
 };
 
+/// `threads`, or fewer when the system refuses to start that many threads now (a limit on the
+/// user's processes, RLIMIT_NPROC, counts threads): at most `threads`, at least 1. oneTBB cannot
+/// recover from a worker thread it fails to start (its private_server.cpp: it throws from the
+/// thread that asked for workers, or terminates from a worker that was waking others), so the
+/// command line first starts, holds and joins as many threads as oneTBB would (its default
+/// concurrency, at most `threads`), and asks for no more threads than it could start. The
+/// answers are the same on any number of threads.
+unsigned startable_threads(unsigned threads);
+
 /// The option specs of the batch options (--threads, default 1, and --shard).
 std::vector<OptionSpec> batch_option_specs();
 

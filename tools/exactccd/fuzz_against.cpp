@@ -165,7 +165,7 @@ FuzzRun run_of(const ParsedOptions& options) {
     throw UsageError("fuzz-against: --shard needs --partial FILE (the shards are merged by exactccd merge --out DIR)");
   if (run.partial_path.empty() == run.out_dir.empty())
     throw UsageError("fuzz-against: give exactly one of --out DIR and --partial FILE");
-  run.threads = scene::resolve_threads(static_cast<unsigned>(options.integer("--threads")));
+  run.threads = startable_threads(scene::resolve_threads(static_cast<unsigned>(options.integer("--threads"))));
   run.shrinking = !options.flag("--no-shrink");
   run.params = separation_params(options);
   run.early_factor = options.real("--early-factor");

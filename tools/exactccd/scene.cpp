@@ -12,6 +12,7 @@
 #include "exactccd/scene.hpp"
 #include "io/mesh_file.hpp"
 #include "io/obj.hpp"
+#include "scene/parallel.hpp"
 #include "output_file.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
@@ -234,7 +235,8 @@ int run_scene(int argc, char** argv) {
   }
   const bool json = options.flag("--json");
   SceneOptions scene_options;
-  if (options.has("--threads")) scene_options.threads = static_cast<unsigned>(options.integer("--threads"));
+  const unsigned threads = options.has("--threads") ? static_cast<unsigned>(options.integer("--threads")) : 0u;
+  scene_options.threads = startable_threads(scene::resolve_threads(threads));  // 0: every hardware thread
   const CcdParams params = separation_params(options);
   scene_options.min_distance = params.min_distance;
   scene_options.tmax = params.tmax;
