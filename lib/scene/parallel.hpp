@@ -157,9 +157,10 @@ struct alignas(64) PerWorker {
 };
 
 /// Calls body(begin, end, worker) over chunks [begin, end) of [0, n) of at most `chunk` indices,
-/// in the current task arena (tbb::parallel_for, auto partitioner: a thread that runs out of
-/// work steals the rest of another's range, so a range full of expensive queries does not hold
-/// the others back), isolated; on the calling thread alone, in order, when threads <= 1 or there
+/// in the current task arena (tbb::parallel_for over the chunks, one task each: the simple
+/// partitioner with grain 1, since the callers size their chunks; a thread takes the next
+/// chunk when it is done with one, so a chunk full of expensive queries does not hold the
+/// others back, as the pool's shared counter did before), isolated; on the calling thread alone, in order, when threads <= 1 or there
 /// is one chunk. `worker` (this_task_arena::current_thread_index(), 0 on one thread) is below
 /// worker_slots(threads) taken here and no two bodies running at once share it, so per-worker
 /// outputs can be indexed by it; which worker runs which chunk is not deterministic: callers
@@ -187,7 +188,7 @@ void parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Body&& 
   std::atomic<bool> stopped{false};
   tbb::this_task_arena::isolate([&] {
     tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, chunks),
+        tbb::blocked_range<std::size_t>(0, chunks, 1),
         [&](const tbb::blocked_range<std::size_t>& range) {
           const numeric::DefaultFpEnvironment fp_environment;  // per task body: workers are reused
           const CancelScope cancel_scope(cancel);              // for loops nested in body
@@ -205,7 +206,7 @@ void parallel_chunks(std::size_t n, unsigned threads, std::size_t chunk, Body&& 
             }
           }
         },
-        tbb::auto_partitioner(), context);
+        tbb::simple_partitioner(), context);
   });
   if (cancel_requested(cancel)) throw Cancelled();
   if (context.is_group_execution_cancelled() && !stopped.load()) throw Cancelled();
