@@ -28,7 +28,8 @@
 //    isolated the same way (Bernstein of degree 2 or 4). At a candidate root of q, q's sign is
 //    0 and every other sign comes from the cell as above (narrowed by bisection of q). The
 //    answer is certain when every candidate is decided; the TOI only when the earliest
-//    contact is an exact point and no undecided or contacting cell starts before it.
+//    contact is an exact point and no undecided or contacting cell starts before it; when it is
+//    a root cell, that cell is handed over (findings.in_plane_toi_cell) to be narrowed exactly.
 // 5. V not identically zero but uncertain in item 2: if the in-plane rule is certainly false over
 //    all of [0, 1], no collision (whatever V's roots). Else, with a visible factorisation: when three
 //    of the four points share one coordinate for all t (two components of a point-on-segment
@@ -85,7 +86,7 @@ template <class IntervalQuery, class Query>
 Outcome run_interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi,
                            pipeline::Findings& findings) {
   const auto P = contact::polynomials(q);
-  if (interval::exactly_zero(P.volume())) return interval::coplanar_strategy(P, want_toi);
+  if (interval::exactly_zero(P.volume())) return interval::coplanar_strategy(P, want_toi, findings.in_plane_toi_cell);
   const Outcome moving = interval::moving_strategy(P, ExactEnds<Query>{double_query}, want_toi, findings.toi_cell);
   // A collision whose TOI cell was handed over (toi_cell) needs nothing more here.
   const bool collides = moving.answer == Outcome::Answer::collides;

@@ -65,12 +65,29 @@ struct VolumeRootCell {
   int sign_at_lo = 0;
 };
 
+/// A root cell of one of the contact rule's in-plane polynomials (contact::visit_in_plane_poly's
+/// index `poly`) of a query whose volume V vanishes identically: the open cell (lo, hi) of
+/// doubles holds exactly one root t* of that polynomial, a simple one, with its (nonzero) sign
+/// sign_at_lo at lo (the opposite at hi); the in-plane rule holds at t*; and every other
+/// candidate time where contact holds or is undecided is >= later_from. So t* is the TOI when
+/// the tightest double interval around it ends at or before later_from.
+struct InPlaneRootCell {
+  double lo = 0, hi = 1;
+  int sign_at_lo = 0;
+  int poly = 0;
+  double later_from = 0;
+};
+
 /// What the stages learned about a query and hand over to the later ones. Each stage list
 /// (lib/questions/) says at its list which stage writes a field and which reads it.
 struct Findings {
   /// Contact: the TOI is V's simple root in this cell (the interval stage proved the collision
   /// and isolated the root, but did not narrow it to adjacent doubles).
   std::optional<VolumeRootCell> toi_cell;
+  /// Contact, V identically zero: the TOI is the root in this cell of an in-plane polynomial if
+  /// it is no later than the cell's later_from (the interval stage proved the collision there
+  /// and isolated the root, but did not narrow it to adjacent doubles).
+  std::optional<InPlaneRootCell> in_plane_toi_cell;
   /// Contact: the static volume filter could not apply its bound (underflow guard or overflow):
   /// worth retrying on the query scaled towards 1.
   bool volume_out_of_range = false;
