@@ -65,12 +65,26 @@ std::array<long double, 5> scaled_coefficients(const exact::IntegerPoly& p) {
   return c;
 }
 
+/// The rule's polynomial `poly` (pipeline::RulePoly) of the integer query, exactly: built alone
+/// (an in-plane polynomial's terms on use; a relative motion's coordinate). Zero when `poly`
+/// names none.
+template <class IntegerQuery>
+exact::IntegerPoly rule_poly(const IntegerQuery& q, const pipeline::RulePoly& poly) {
+  exact::IntegerPoly p;  // zero until built
+  if (poly.in_plane >= 0) {
+    const auto P = contact::polynomials(q);
+    contact::visit_in_plane_poly(P, poly.in_plane, [&](const auto& r) { p = integer_poly(r); });
+  } else if (0 <= poly.from && poly.from < 4 && 0 <= poly.to && poly.to < 4 && 0 <= poly.coordinate && poly.coordinate < 3) {
+    const auto motion = contact::relative_motion(rows(q), poly.from, poly.to);
+    p = integer_poly(poly.coordinate == 0 ? motion.x : poly.coordinate == 1 ? motion.y : motion.z);
+  }
+  return p;
+}
+
 template <class IntegerQuery, class Query>
-std::optional<TimeInterval> narrow_toi_in_plane_cell(const Query& q, const pipeline::InPlaneRootCell& cell) {
+std::optional<TimeInterval> narrow_toi_in_rule_cell(const Query& q, const pipeline::RuleRootCell& cell) {
   if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
-  const auto P = contact::polynomials(to_integer_query<IntegerQuery>(q));  // terms built on use
-  exact::IntegerPoly p;
-  contact::visit_in_plane_poly(P, cell.poly, [&](const auto& poly) { p = integer_poly(poly); });
+  const exact::IntegerPoly p = rule_poly(to_integer_query<IntegerQuery>(q), cell.poly);
   // The cell as handed over: exact signs at its ends (a guard: never a TOI from a wrong cell).
   if (p.is_zero() || exact::sign_at(p, cell.lo) != cell.sign_at_lo || exact::sign_at(p, cell.hi) != -cell.sign_at_lo)
     return std::nullopt;
@@ -90,12 +104,12 @@ std::optional<TimeInterval> narrow_toi_in_plane_cell(const Query& q, const pipel
 
 }  // namespace
 
-std::optional<TimeInterval> toi_in_plane_cell(const VertexFaceQuery& q, const pipeline::InPlaneRootCell& cell) {
-  return narrow_toi_in_plane_cell<VertexFaceQueryT<Integer>>(q, cell);
+std::optional<TimeInterval> toi_in_rule_cell(const VertexFaceQuery& q, const pipeline::RuleRootCell& cell) {
+  return narrow_toi_in_rule_cell<VertexFaceQueryT<Integer>>(q, cell);
 }
 
-std::optional<TimeInterval> toi_in_plane_cell(const EdgeEdgeQuery& q, const pipeline::InPlaneRootCell& cell) {
-  return narrow_toi_in_plane_cell<EdgeEdgeQueryT<Integer>>(q, cell);
+std::optional<TimeInterval> toi_in_rule_cell(const EdgeEdgeQuery& q, const pipeline::RuleRootCell& cell) {
+  return narrow_toi_in_rule_cell<EdgeEdgeQueryT<Integer>>(q, cell);
 }
 
 std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const pipeline::VolumeRootCell& cell) {

@@ -1,16 +1,21 @@
-// The TOI of a coplanar collision (V identically zero) in the in-plane root cell the interval
-// stage hands over (filter/toi_narrowing.hpp, InPlaneToiStage; interval/coplanar_roots.hpp):
+// The TOI of a collision at a root of another polynomial of the rule than V, in the root cell the
+// interval stage hands over (filter/toi_narrowing.hpp, RuleRootToiStage): coplanar collisions (V
+// identically zero, interval/coplanar_roots.hpp) first:
 // random queries moving in one plane (full-significand coordinates, so their contact times are
 // not doubles), whose TOI must equal the exact method's (CGAL, independent of the filter) bit
 // for bit whenever the stage gives one; the stage must give most of them (the integer stages
 // took them all before). Deliberately wrong cells (a wrong sign, a cell without the root, an
-// earlier candidate) must give no TOI. And contact::visit_in_plane_poly must name the
-// polynomials of for_each_in_plane_poly in its order (the index the interval stage hands over).
+// earlier candidate) must give no TOI. The same for queries whose V factors (three points on
+// one grid line: interval/factored_roots.hpp), and a linear factor's root against its exact
+// rational value. And contact::visit_in_plane_poly must name the polynomials of
+// for_each_in_plane_poly in its order (the index the interval stage hands over).
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "contact/contact_polynomials.hpp"
@@ -36,6 +41,23 @@ std::array<Vec3, 8> coplanar_rows(std::mt19937_64& rng) {
   return r;
 }
 
+/// Eight rows where three points share one coordinate for all t (z: the same value at t0 for
+/// all three, and at t1), as on a grid line of a folding sheet: two components of one segment
+/// test's cross product vanish identically, and V factors (interval/factored_roots.hpp). The
+/// three are p, a, b (vertex-face: p against edge (a, b)) or a0, b0, b1 (edge-edge: a0 against
+/// edge b); the first point sweeps across the others.
+std::array<Vec3, 8> grid_line_rows(std::mt19937_64& rng, bool vertex_face) {
+  std::array<Vec3, 8> r = coplanar_rows(rng);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double z0 = u(rng), z1 = u(rng);
+  for (auto& p : r) p.y = u(rng);  // no longer in one plane
+  for (const int i : vertex_face ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 3}) {
+    r[i].z = z0;
+    r[i + 4].z = z1;
+  }
+  return r;
+}
+
 struct Tally {
   int handed_over = 0;  // the interval stage handed over an in-plane root cell
   int certified = 0;    // and the stage narrowed it to the TOI
@@ -49,10 +71,10 @@ void check_query(const Query& q, Tally& tally) {
   EXPECT_EQ(answer_query(q, CcdParams{}, Method::filtered, true, nullptr), exact);
   pipeline::Findings findings;
   (void)filter::interval_stage(q, true, findings);
-  if (!findings.in_plane_toi_cell) return;
+  if (!findings.rule_toi_cell) return;
   ++tally.handed_over;
   ASSERT_TRUE(exact) << "a cell handed over for a query that does not collide";
-  const std::optional<TimeInterval> toi = filter::toi_in_plane_cell(q, *findings.in_plane_toi_cell);
+  const std::optional<TimeInterval> toi = filter::toi_in_rule_cell(q, *findings.rule_toi_cell);
   if (!toi) return;
   ++tally.certified;
   EXPECT_EQ(toi->lo, exact->lo);
@@ -79,41 +101,91 @@ TEST(InPlaneToi, EdgeEdgeEqualsExactTois) {
   EXPECT_GT(tally.certified, tally.handed_over * 3 / 4);
 }
 
+template <class Query>
+Tally check_grid_line_queries(std::uint64_t seed, int n) {
+  std::mt19937_64 rng(seed);
+  Tally tally;
+  for (int i = 0; i < n; ++i)
+    check_query(from_rows<Query>(grid_line_rows(rng, std::is_same_v<Query, VertexFaceQuery>)), tally);
+  return tally;
+}
+
+TEST(FactoredToi, VertexFaceEqualsExactTois) {
+  const Tally tally = check_grid_line_queries<VertexFaceQuery>(20261207, 400);
+  EXPECT_GT(tally.handed_over, 40);
+  EXPECT_GT(tally.certified, tally.handed_over * 3 / 4);
+}
+
+TEST(FactoredToi, EdgeEdgeEqualsExactTois) {
+  const Tally tally = check_grid_line_queries<EdgeEdgeQuery>(20261208, 400);
+  EXPECT_GT(tally.handed_over, 40);
+  EXPECT_GT(tally.certified, tally.handed_over * 3 / 4);
+}
+
 /// A query with a handed-over cell the stage narrows, and that cell.
 template <class Query>
-std::pair<Query, pipeline::InPlaneRootCell> certified_example(std::uint64_t seed) {
+std::pair<Query, pipeline::RuleRootCell> certified_example(std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   for (;;) {
     const Query q = from_rows<Query>(coplanar_rows(rng));
     pipeline::Findings findings;
     (void)filter::interval_stage(q, true, findings);
-    if (findings.in_plane_toi_cell && filter::toi_in_plane_cell(q, *findings.in_plane_toi_cell))
-      return {q, *findings.in_plane_toi_cell};
+    if (findings.rule_toi_cell && filter::toi_in_rule_cell(q, *findings.rule_toi_cell))
+      return {q, *findings.rule_toi_cell};
   }
 }
 
 template <class Query>
 void check_wrong_cells(std::uint64_t seed) {
   const auto [q, cell] = certified_example<Query>(seed);
-  const TimeInterval toi = *filter::toi_in_plane_cell(q, cell);
+  const TimeInterval toi = *filter::toi_in_rule_cell(q, cell);
   ASSERT_LT(cell.lo, toi.lo) << "the example's root is not inside its cell";
-  pipeline::InPlaneRootCell wrong = cell;
+  pipeline::RuleRootCell wrong = cell;
   wrong.sign_at_lo = -cell.sign_at_lo;  // the signs at the ends contradict it
-  EXPECT_FALSE(filter::toi_in_plane_cell(q, wrong));
+  EXPECT_FALSE(filter::toi_in_rule_cell(q, wrong));
   wrong = cell;
   wrong.hi = toi.lo;  // (lo, toi.lo): the root is not in it, no sign change
-  EXPECT_FALSE(filter::toi_in_plane_cell(q, wrong));
+  EXPECT_FALSE(filter::toi_in_rule_cell(q, wrong));
   wrong = cell;
   wrong.later_from = toi.lo;  // another candidate may hold before the root
-  EXPECT_FALSE(filter::toi_in_plane_cell(q, wrong));
+  EXPECT_FALSE(filter::toi_in_rule_cell(q, wrong));
   wrong = cell;
-  wrong.poly = (cell.poly + 1) % 10;  // another polynomial's signs
-  const std::optional<TimeInterval> other = filter::toi_in_plane_cell(q, wrong);
+  wrong.poly = pipeline::RulePoly{(cell.poly.in_plane + 1) % 10};  // another polynomial's signs
+  const std::optional<TimeInterval> other = filter::toi_in_rule_cell(q, wrong);
   EXPECT_TRUE(!other || !(*other == toi)) << "another polynomial gave the same TOI";
 }
 
 TEST(InPlaneToi, VertexFaceWrongCellsGiveNoToi) { check_wrong_cells<VertexFaceQuery>(7); }
 TEST(InPlaneToi, EdgeEdgeWrongCellsGiveNoToi) { check_wrong_cells<EdgeEdgeQuery>(8); }
+
+/// The tightest double interval around a rational r in [0, 1].
+TimeInterval tightest(const mpq_class& r) {
+  const double d = r.get_d();  // truncates towards zero: r >= 0, so d <= r
+  if (mpq_class(d) == r) return {d, d};
+  return {d, std::nextafter(d, std::numeric_limits<double>::infinity())};
+}
+
+/// A linear factor of V (pipeline::RulePoly naming a coordinate of a relative motion, as the
+/// factored view hands over): its root in (0, 1), the exact rational d0 / (d0 - d1) of the
+/// exact differences, narrowed to the tightest double interval.
+TEST(FactoredToi, LinearFactorRootIsTightest) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const std::array<Vec3, 8> r = coplanar_rows(rng);
+    const VertexFaceQuery q = from_rows<VertexFaceQuery>(r);
+    const int from = static_cast<int>(rng() % 4), to = (from + 1 + static_cast<int>(rng() % 3)) % 4;
+    const mpq_class d0 = mpq_class(r[to].x) - mpq_class(r[from].x), d1 = mpq_class(r[to + 4].x) - mpq_class(r[from + 4].x);
+    if (sgn(d0) * sgn(d1) >= 0) continue;  // no root in (0, 1)
+    const pipeline::RuleRootCell cell{0.0, 1.0, sgn(d0), pipeline::RulePoly{-1, from, to, 0},
+                                      std::numeric_limits<double>::infinity()};
+    const std::optional<TimeInterval> toi = filter::toi_in_rule_cell(q, cell);
+    ASSERT_TRUE(toi) << "query " << i;
+    const TimeInterval expected = tightest(mpq_class(d0 / (d0 - d1)));
+    EXPECT_EQ(toi->lo, expected.lo) << "query " << i;
+    EXPECT_EQ(toi->hi, expected.hi) << "query " << i;
+  }
+}
 
 /// The addresses of the polynomials for_each_in_plane_poly visits, in order.
 template <class Polys>
