@@ -126,6 +126,9 @@ double root_guess(const kinds::Feature& f, const std::array<Vec3, N>& x, double 
       if (side == -1) f_lo /= 2;
       side = -1;
     }
+    // Enough for a guess: the root is in [lo, hi], whose ends round to the same or adjacent
+    // doubles (the caller examines the guess and its neighbour first).
+    if (static_cast<double>(hi) <= std::nextafter(static_cast<double>(lo), std::numeric_limits<double>::infinity())) break;
   }
   return static_cast<double>((lo + hi) / 2);
 }
