@@ -61,7 +61,8 @@ std::array<long double, 5> scaled_coefficients(const exact::IntegerPoly& p) {
   }
   std::array<long double, 5> c{};
   for (int i = 0; i <= p.deg; ++i)
-    if (mantissa[i] != 0) c[i] = std::ldexp(static_cast<long double>(mantissa[i]), static_cast<int>(std::max(exponent[i] - largest, -20000L)));
+    if (mantissa[i] != 0)  // a relative exponent below -20000 is 0 in long double anyway
+      c[i] = std::ldexp(static_cast<long double>(mantissa[i]), static_cast<int>(std::max(exponent[i] - largest, -20000L)));
   return c;
 }
 
@@ -74,7 +75,8 @@ exact::IntegerPoly rule_poly(const IntegerQuery& q, const pipeline::RulePoly& po
   if (poly.in_plane >= 0) {
     const auto P = contact::polynomials(q);
     contact::visit_in_plane_poly(P, poly.in_plane, [&](const auto& r) { p = integer_poly(r); });
-  } else if (0 <= poly.from && poly.from < 4 && 0 <= poly.to && poly.to < 4 && 0 <= poly.coordinate && poly.coordinate < 3) {
+  } else if (const bool rows_valid = 0 <= poly.from && poly.from < 4 && 0 <= poly.to && poly.to < 4;
+             rows_valid && 0 <= poly.coordinate && poly.coordinate < 3) {
     const auto motion = contact::relative_motion(rows(q), poly.from, poly.to);
     p = integer_poly(poly.coordinate == 0 ? motion.x : poly.coordinate == 1 ? motion.y : motion.z);
   }

@@ -21,7 +21,8 @@ using pipeline::Work;
 /// and read by VolumeRetryStage (retry on the scaled query only where stage 1's range limits
 /// stopped it); toi_cell is written by IntervalStage (a collision proved, its root cell isolated
 /// but not narrowed) and read by ToiInCellStage (narrows it); rule_toi_cell likewise (a root of
-/// another polynomial of the rule: V identically zero, or factored), read by RuleRootToiStage. used_gmp and use are not used here:
+/// another polynomial of the rule: V identically zero, or factored), read by RuleRootToiStage.
+/// used_gmp and use are not used here:
 /// the integer stages count at their own counters, and the exact path takes the contact rule whole.
 template <class Query>
 std::optional<TimeInterval> through_contact_stages(const Query& q, const Question& asked, StageCounters* counters) {

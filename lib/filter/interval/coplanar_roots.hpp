@@ -98,7 +98,7 @@ class CoplanarCandidates {
   const Polys& P_;
   bool failed_ = false, uncertain_ = false;
   std::optional<TimeInterval> earliest_contact_;  // among decided candidates
-  pipeline::RuleRootCell earliest_cell_;       // its root cell (when not a point)
+  pipeline::RuleRootCell earliest_cell_;          // its root cell (when not a point)
   double earliest_undecided_ = kInf;              // the smallest lo of an undecided cell
   // The starts of every contact or undecided cell (at most 2 ends and the roots of 3 + 4 + 16
   // polynomials), and the earliest contact's position among them.
@@ -129,7 +129,7 @@ pipeline::Outcome coplanar_strategy(const Polys& P, bool want_toi, std::optional
   // Only the polynomials the rule can consult somewhere in [0, 1] (docs/design.md): a branch-
   // vector component nonzero without a root keeps the rule in its proper branch throughout; a
   // branch vector that vanishes identically, in the other.
-  // Each polynomial is passed with its index in contact::for_each_in_plane_poly's order.
+  // Each polynomial is examined with its index in contact::for_each_in_plane_poly's order.
   bool nowhere_zero = false, identically_zero = true;
   const auto& v = contact::branch_vector(P);
   int index = 0;  // of the branch vector's components: 0, 1, 2
@@ -141,7 +141,9 @@ pipeline::Outcome coplanar_strategy(const Polys& P, bool want_toi, std::optional
         certain_sign((*component)(Interval(0.0, 1.0))) != 0)
       nowhere_zero = true;  // no root and certainly nonzero on [0, 1]
   }
-  const auto add_from = [&](int first) { return [&candidates, index = first](const auto& p) mutable { candidates.roots_of(p, index++); }; };
+  const auto add_from = [&](int first) {  // each polynomial with its index, from `first` on
+    return [&candidates, index = first](const auto& p) mutable { candidates.roots_of(p, index++); };
+  };
   if (!identically_zero) contact::for_each_proper_poly(P, add_from(contact::kFirstProperPoly));
   if (!nowhere_zero) contact::for_each_degenerate_poly(P, add_from(contact::first_degenerate_poly(P)));
   return candidates.outcome(want_toi, toi_cell);
