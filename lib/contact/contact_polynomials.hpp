@@ -277,13 +277,84 @@ void for_each_degenerate_poly(const EdgeEdgeTerms<Motion>& P, F&& f) {
 }
 
 /// Calls f on every polynomial the contact rule may consult apart from the volume: the
-/// candidate times of a query that is coplanar for all t are the roots of these.
+/// candidate times of a query that is coplanar for all t are the roots of these. Their index in
+/// this order is visit_in_plane_poly's.
 template <class Polys, class F>
 void for_each_in_plane_poly(const Polys& P, F&& f) {
   const auto& v = branch_vector(P);
   f(v.x), f(v.y), f(v.z);
   for_each_proper_poly(P, f);
   for_each_degenerate_poly(P, f);
+}
+
+/// How many proper polynomials the kind has (for_each_proper_poly): 3 barycentric numerators,
+/// or 4 segment parameters.
+template <class Motion>
+constexpr int proper_poly_count(const VertexFaceTerms<Motion>&) {
+  return 3;
+}
+template <class Motion>
+constexpr int proper_poly_count(const EdgeEdgeTerms<Motion>&) {
+  return 4;
+}
+
+/// The index in for_each_in_plane_poly's order of the first proper polynomial (after the
+/// branch vector's three components) and of the first degenerate one.
+inline constexpr int kFirstProperPoly = 3;
+template <class Polys>
+constexpr int first_degenerate_poly(const Polys& P) {
+  return kFirstProperPoly + proper_poly_count(P);
+}
+
+/// The i-th proper polynomial (for_each_proper_poly's order).
+template <class Motion>
+const auto& proper_poly(const VertexFaceTerms<Motion>& P, int i) {
+  return P.barycentric(i);
+}
+template <class Motion>
+const auto& proper_poly(const EdgeEdgeTerms<Motion>& P, int i) {
+  return P.parameter(i);
+}
+
+/// How many point-on-segment tests the degenerate branch has (for_each_degenerate_poly: four
+/// polynomials each): p on the triangle's 3 edges, or the 4 endpoints on the other edge.
+template <class Motion>
+constexpr int degenerate_segment_count(const VertexFaceTerms<Motion>&) {
+  return 3;
+}
+template <class Motion>
+constexpr int degenerate_segment_count(const EdgeEdgeTerms<Motion>&) {
+  return 4;
+}
+
+/// The i-th point-on-segment test of the degenerate branch (for_each_degenerate_poly's order).
+template <class Motion>
+const auto& degenerate_segment(const VertexFaceTerms<Motion>& P, int i) {
+  return P.on_edge(i);
+}
+template <class Motion>
+const auto& degenerate_segment(const EdgeEdgeTerms<Motion>& P, int i) {
+  return P.endpoint_on_edge(i);
+}
+
+/// Calls f on the in-plane polynomial of index `index` in for_each_in_plane_poly's order,
+/// building only that one (and what it is made of); nothing for an index out of range.
+template <class Polys, class F>
+void visit_in_plane_poly(const Polys& P, int index, F&& f) {
+  const int degenerate = first_degenerate_poly(P);
+  if (index < 0) return;
+  if (index < kFirstProperPoly) {
+    const auto& v = branch_vector(P);
+    f(index == 0 ? v.x : index == 1 ? v.y : v.z);
+  } else if (index < degenerate) {
+    f(proper_poly(P, index - kFirstProperPoly));
+  } else if (const int k = index - degenerate; k < 4 * degenerate_segment_count(P)) {
+    const auto& s = degenerate_segment(P, k / 4);  // four polynomials per segment test
+    if (k % 4 == 3)
+      f(s.dot);
+    else
+      f(k % 4 == 0 ? s.cross.x : k % 4 == 1 ? s.cross.y : s.cross.z);
+  }
 }
 
 }  // namespace exactccd::contact

@@ -28,14 +28,16 @@
 //    isolated the same way (Bernstein of degree 2 or 4). At a candidate root of q, q's sign is
 //    0 and every other sign comes from the cell as above (narrowed by bisection of q). The
 //    answer is certain when every candidate is decided; the TOI only when the earliest
-//    contact is an exact point and no undecided or contacting cell starts before it.
+//    contact is an exact point and no undecided or contacting cell starts before it; when it is
+//    a root cell, that cell is handed over (findings.rule_toi_cell) to be narrowed exactly.
 // 5. V not identically zero but uncertain in item 2: if the in-plane rule is certainly false over
 //    all of [0, 1], no collision (whatever V's roots). Else, with a visible factorisation: when three
 //    of the four points share one coordinate for all t (two components of a point-on-segment
 //    cross product are exactly zero), V is a linear factor times the third component C_k, and
 //    the candidates are the roots of the two factors (factored_strategy). At a root of C_k the
 //    rule's segment test has a sign known to be zero, which decides contacts exactly on an
-//    edge's line; a contact found there has a certified TOI (narrowed on C_k).
+//    edge's line; a contact found there has a certified TOI (narrowed on its factor), or its
+//    root cell is handed over (findings.rule_toi_cell) to be narrowed exactly.
 // 6. Edge-edge, V uncertain and not factored as in 5: when the edge directions da, db agree
 //    exactly in two coordinates up to one sign s (db_j = s da_j as exact polynomials: parallel
 //    grid lines of a folding sheet moving alike), w = Delta (da x e_k) and V = -Delta F with
@@ -85,7 +87,7 @@ template <class IntervalQuery, class Query>
 Outcome run_interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi,
                            pipeline::Findings& findings) {
   const auto P = contact::polynomials(q);
-  if (interval::exactly_zero(P.volume())) return interval::coplanar_strategy(P, want_toi);
+  if (interval::exactly_zero(P.volume())) return interval::coplanar_strategy(P, want_toi, findings.rule_toi_cell);
   const Outcome moving = interval::moving_strategy(P, ExactEnds<Query>{double_query}, want_toi, findings.toi_cell);
   // A collision whose TOI cell was handed over (toi_cell) needs nothing more here.
   const bool collides = moving.answer == Outcome::Answer::collides;
@@ -98,8 +100,9 @@ Outcome run_interval_stage(const IntervalQuery& q, const Query& double_query, bo
   if (!collides && interval::rule_over_unit_interval(P) == contact::Truth::no) return Outcome::separate();
   // Undecided, or a collision whose TOI could not be narrowed on V (V's sign is uncertain near
   // a root it shares with a factor's): the factored view may decide or narrow on the factor.
-  const Outcome factored = interval::factored_strategy(P, q, want_toi);
-  if (factored.answer != Outcome::Answer::undecided && !(toi_missing && !factored.toi)) return factored;
+  const Outcome factored = interval::factored_strategy(P, q, want_toi, findings.rule_toi_cell);
+  const bool factored_toi = factored.toi || findings.rule_toi_cell;  // certified, or its cell handed over
+  if (factored.answer != Outcome::Answer::undecided && !(toi_missing && !factored_toi)) return factored;
   // Edge directions equal (or opposite) in two coordinates: V = -Delta F, w = Delta (da x e_k).
   const Outcome parallel = interval::parallel_factor_strategy(P, q, want_toi);
   if (parallel.answer == Outcome::Answer::undecided || (toi_missing && !parallel.toi)) return moving;

@@ -10,7 +10,9 @@
 namespace exactccd::filter {
 
 /// Stage 2 for vertex-face. With want_toi, a collision's TOI is certified, or its root cell is
-/// handed over in findings.toi_cell (when it is V's simple root), or neither.
+/// handed over in findings.toi_cell (when it is V's simple root) or findings.rule_toi_cell
+/// (a simple root of another polynomial of the rule: V identically zero, or factored), or
+/// neither.
 pipeline::Outcome interval_stage(const VertexFaceQuery& q, bool want_toi, pipeline::Findings& findings);
 
 /// Stage 2 for edge-edge; see interval_stage(const VertexFaceQuery&, bool, pipeline::Findings&).

@@ -6,6 +6,12 @@
 // usually settle it; otherwise secant steps on the double-double values of V at the last two
 // doubles examined (numeric/root_narrowing.hpp) land next to the root within a step or two
 // (bisection before, with a guess far off, about 40 signs).
+// When V vanishes identically (coplanar for all t), or factors visibly (interval/factored_roots.hpp),
+// the interval stage may hand over instead the root cell of another polynomial of the rule
+// (pipeline::RuleRootCell: an in-plane polynomial, or a linear factor of V): narrowed the same
+// way with exact signs of that polynomial in GMP (one polynomial of degree <= 4, built alone),
+// it is the TOI when it ends no later than every other candidate that may hold. Before this
+// stage such a TOI took the whole integer stages (10-50 us per query on data/sim's folds).
 #pragma once
 
 #include <optional>
@@ -23,6 +29,15 @@ std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const pipeline
 /// See toi_in_cell(const VertexFaceQuery&, const pipeline::VolumeRootCell&).
 std::optional<TimeInterval> toi_in_cell(const EdgeEdgeQuery& q, const pipeline::VolumeRootCell& cell);
 
+/// The tightest double interval around the root t* of the rule's polynomial cell.poly
+/// (pipeline::RulePoly) in `cell`, by exact signs at doubles, when it ends at or before
+/// cell.later_from (then it is the TOI: pipeline::RuleRootCell); nullopt when it does not, or
+/// when the exact signs at the cell's ends contradict the cell (then a later stage finds the TOI).
+std::optional<TimeInterval> toi_in_rule_cell(const VertexFaceQuery& q, const pipeline::RuleRootCell& cell);
+
+/// See toi_in_rule_cell(const VertexFaceQuery&, const pipeline::RuleRootCell&).
+std::optional<TimeInterval> toi_in_rule_cell(const EdgeEdgeQuery& q, const pipeline::RuleRootCell& cell);
+
 /// The contact question's stage after the interval stage: the TOI of a collision it proved, in
 /// the root cell it handed over (findings.toi_cell).
 struct ToiInCellStage {
@@ -33,6 +48,22 @@ struct ToiInCellStage {
   pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
     if (!work.collides || !work.findings.toi_cell) return pipeline::Outcome::undecided();
     if (const auto toi = toi_in_cell(work.query(), *work.findings.toi_cell)) return pipeline::Outcome::collides(toi);
+    return pipeline::Outcome::undecided();
+  }
+};
+
+/// The contact question's stage after ToiInCellStage: the TOI of a collision the interval stage
+/// proved at a root of another polynomial of the rule than V (V identically zero, or factored),
+/// in the root cell it handed over (findings.rule_toi_cell).
+struct RuleRootToiStage {
+  /// Never counted: it runs only after the interval stage decided (and counted) the answer.
+  static constexpr pipeline::Counter counter = &StageCounters::interval;
+  /// The TOI in the handed-over cell, when it is certain there.
+  template <class Query>
+  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+    if (!work.collides || !work.findings.rule_toi_cell) return pipeline::Outcome::undecided();
+    if (const auto toi = toi_in_rule_cell(work.query(), *work.findings.rule_toi_cell))
+      return pipeline::Outcome::collides(toi);
     return pipeline::Outcome::undecided();
   }
 };

@@ -65,12 +65,38 @@ struct VolumeRootCell {
   int sign_at_lo = 0;
 };
 
+/// A polynomial of the contact rule other than V, named so that a later stage can build it
+/// exactly from the query: one of the in-plane polynomials (contact::visit_in_plane_poly's
+/// index in_plane >= 0), or else coordinate `coordinate` of the relative motion from row `from`
+/// to row `to` of the query (contact::relative_motion: linear; a factor of V in the interval
+/// stage's factored view).
+struct RulePoly {
+  int in_plane = -1;
+  int from = 0, to = 0, coordinate = 0;
+};
+
+/// A root cell of a polynomial `poly` of the contact rule other than V: the open cell (lo, hi)
+/// of doubles holds exactly one root t* of it, a simple one, with its (nonzero) sign sign_at_lo
+/// at lo (the opposite at hi); the rule holds at t*; and every other candidate time where
+/// contact holds or is undecided is >= later_from. So t* is the TOI when the tightest double
+/// interval around it ends at or before later_from.
+struct RuleRootCell {
+  double lo = 0, hi = 1;
+  int sign_at_lo = 0;
+  RulePoly poly;
+  double later_from = 0;
+};
+
 /// What the stages learned about a query and hand over to the later ones. Each stage list
 /// (lib/questions/) says at its list which stage writes a field and which reads it.
 struct Findings {
   /// Contact: the TOI is V's simple root in this cell (the interval stage proved the collision
   /// and isolated the root, but did not narrow it to adjacent doubles).
   std::optional<VolumeRootCell> toi_cell;
+  /// Contact, V identically zero or factored: the TOI is the root in this cell of a polynomial
+  /// of the rule if it is no later than the cell's later_from (the interval stage proved the
+  /// collision there and isolated the root, but did not narrow it to adjacent doubles).
+  std::optional<RuleRootCell> rule_toi_cell;
   /// Contact: the static volume filter could not apply its bound (underflow guard or overflow):
   /// worth retrying on the query scaled towards 1.
   bool volume_out_of_range = false;

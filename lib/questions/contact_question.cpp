@@ -20,7 +20,9 @@ using pipeline::Work;
 /// (pipeline/outcome.hpp) in this list: volume_out_of_range is written by VolumeExclusionStage
 /// and read by VolumeRetryStage (retry on the scaled query only where stage 1's range limits
 /// stopped it); toi_cell is written by IntervalStage (a collision proved, its root cell isolated
-/// but not narrowed) and read by ToiInCellStage (narrows it). used_gmp and use are not used here:
+/// but not narrowed) and read by ToiInCellStage (narrows it); rule_toi_cell likewise (a root of
+/// another polynomial of the rule: V identically zero, or factored), read by RuleRootToiStage.
+/// used_gmp and use are not used here:
 /// the integer stages count at their own counters, and the exact path takes the contact rule whole.
 template <class Query>
 std::optional<TimeInterval> through_contact_stages(const Query& q, const Question& asked, StageCounters* counters) {
@@ -34,6 +36,7 @@ std::optional<TimeInterval> through_contact_stages(const Query& q, const Questio
                  filter::UnitScalingStage{},           //    the query scaled towards 1 for the stages below
                  filter::IntervalStage{},              // 2. V's roots and the in-plane rule in intervals
                  filter::ToiInCellStage{},             //    a collision's TOI in its root cell (double-double)
+                 filter::RuleRootToiStage{},           //    the TOI at a root of another rule polynomial (exact signs)
                  filter::FixedIntegerStage{},          // 3a. exact, in 1024-bit integers (no allocation)
                  filter::IntegerStage{},               // 3. exact, in GMP integers
                  exact::ExactContactStage{});          // 4. CGAL's algebraic kernel: always decides

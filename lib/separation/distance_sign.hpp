@@ -95,8 +95,9 @@ int distance_sign_at(const kinds::Feature& f, const std::array<Vec3, N>& x, doub
 }
 
 /// A guess of the root of feature f's distance in (a, b) (f(a) > 0 > f(b)): the Illinois
-/// variant of regula falsi on the distance evaluated from the geometry in long double. Only a
-/// guess: the caller certifies signs at whatever it returns.
+/// variant of regula falsi on the distance evaluated from the geometry in long double, until
+/// the bracket's ends round to adjacent doubles. Only a guess: the caller certifies signs at
+/// whatever it returns.
 template <std::size_t N>
 double root_guess(const kinds::Feature& f, const std::array<Vec3, N>& x, double d, double a, double b) {
   constexpr std::size_t P = N / 2;
@@ -126,6 +127,10 @@ double root_guess(const kinds::Feature& f, const std::array<Vec3, N>& x, double 
       if (side == -1) f_lo /= 2;
       side = -1;
     }
+    // Enough for a guess: the root is in [lo, hi], whose ends round to the same or adjacent
+    // doubles (the caller examines the guess and its neighbour first).
+    const double lo_rounded = static_cast<double>(lo), hi_rounded = static_cast<double>(hi);
+    if (hi_rounded <= std::nextafter(lo_rounded, std::numeric_limits<double>::infinity())) break;
   }
   return static_cast<double>((lo + hi) / 2);
 }

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "filter/interval/in_plane_over_cell.hpp"
 #include "filter/interval/isolation.hpp"
@@ -103,10 +104,13 @@ inline int only_nonzero_component(const std::array<const contact::Poly<Interval,
   return zeros == 2 ? k : -1;
 }
 
-/// V = +-f g with f = (W - X)_k linear and g = C_k of `test`: the roots of both, in order.
+/// V = +-f g with f = (W - X)_k linear and g = C_k of `test`: the roots of both, in order. A
+/// contact's root cell not narrowed to adjacent doubles here is handed over in `toi_cell`: the
+/// candidates' cells are disjoint and in order (checked below) and every root of V is one of
+/// them, so every other candidate that may hold is after it (later_from = +inf).
 template <class Polys, class Rows>
 pipeline::Outcome factored_by_test(const Polys& P, const Rows& r, const SegmentTest& test, bool want_toi,
-                                   bool& applies) {
+                                   bool& applies, std::optional<pipeline::RuleRootCell>& toi_cell) {
   const auto& cross = segment_test(P, test.index).cross;
   const int k = only_nonzero_component({&cross.x, &cross.y, &cross.z});
   applies = false;
@@ -128,20 +132,30 @@ pipeline::Outcome factored_by_test(const Polys& P, const Rows& r, const SegmentT
         return c.factor == 1 ? in_plane_verdict(P, g, true, c.cell) : in_plane_verdict(P, f, false, c.cell);
       },
       [&](FactorCandidate& c) {
-        return (c.factor == 1 ? narrow(g, c.cell, kAllHalvings) : narrow(f, c.cell, kAllHalvings)) == Narrowing::done;
+        if ((c.factor == 1 ? narrow(g, c.cell, kAllHalvings) : narrow(f, c.cell, kAllHalvings)) == Narrowing::done)
+          return true;
+        // g = C_k is the in-plane polynomial of index first_degenerate + 4 test + k
+        // (contact::for_each_degenerate_poly); f is coordinate k of the motion X -> W.
+        const pipeline::RulePoly poly = c.factor == 1
+            ? pipeline::RulePoly{contact::first_degenerate_poly(P) + 4 * test.index + k}
+            : pipeline::RulePoly{-1, test.x, test.w, k};
+        toi_cell = pipeline::RuleRootCell{c.cell.lo, c.cell.hi, c.cell.sign_at_lo, poly, kInf};
+        return false;
       });
 }
 
-/// The stage with the factorisation of the first segment test that has one (file comment).
+/// The stage with the factorisation of the first segment test that has one (file comment); a
+/// collision's root cell may be handed over in `toi_cell` (factored_by_test).
 template <class Polys, class IntervalQuery>
-pipeline::Outcome factored_strategy(const Polys& P, const IntervalQuery& q, bool want_toi) {
+pipeline::Outcome factored_strategy(const Polys& P, const IntervalQuery& q, bool want_toi,
+                                    std::optional<pipeline::RuleRootCell>& toi_cell) {
   const auto r = rows(q);
   const auto tests = [] {
     if constexpr (contact::is_vertex_face_polys<Polys>::value) return kVertexFaceTests; else return kEdgeEdgeTests;
   }();
   for (const SegmentTest& test : tests) {
     bool applies = false;
-    const pipeline::Outcome o = factored_by_test(P, r, test, want_toi, applies);
+    const pipeline::Outcome o = factored_by_test(P, r, test, want_toi, applies, toi_cell);
     if (applies) return o;
   }
   return pipeline::Outcome::undecided();
