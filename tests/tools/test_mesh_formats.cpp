@@ -371,6 +371,21 @@ TEST(MeshFormats, OffStartingWithACommentIsOff) {
 // An empty OFF file's error named line 0 (lines are 1-based).
 TEST(MeshFormats, EmptyOffNamesLineOne) { EXPECT_EQ(off_error(""), "m.off:1: empty OFF file"); }
 
+// Found by fuzz_read_off's second long run: a count written "-0" was read as 0 ("OFF\n\n-0 0 03\n"
+// was an empty mesh): a count has no minus sign, in OFF's counts line, an OFF face's vertex
+// count and a PLY element count; "+3" still is 3.
+TEST(MeshFormats, MinusZeroIsNoCount) {
+  const std::string counts = "m.off:2: expected the counts 'vertices faces [edges]' (non-negative integers)";
+  EXPECT_EQ(off_error("OFF\n-0 0 03\n"), counts);
+  EXPECT_EQ(off_error("OFF\n0 -0\n"), counts);
+  EXPECT_EQ(off_error("OFF\n3 1 -0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), counts);
+  EXPECT_EQ(off_error("OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n-0 0 1 2\n"),
+            "m.off:6: the face's vertex count '-0' is not a non-negative integer");
+  EXPECT_EQ(off_error("OFF\n+3 1\n0 0 0\n1 0 0\n0 1 0\n+3 0 1 2\n"), "");
+  EXPECT_EQ(ply_error("ply\nformat ascii 1.0\nelement vertex -0\nproperty float x\nend_header\n"),
+            "m.ply:3: expected 'element NAME COUNT' with COUNT a non-negative integer");
+}
+
 // Found by fuzz_read_off's long run: the readers skipped a leading '+' before std::from_chars,
 // which then read "+-1" as -1 ("OFF\n+-0 0\n" was an empty mesh). A sign after the '+' is no
 // number now, in every field of every text format; "+1" still is 1.

@@ -82,6 +82,12 @@ bool parse_integer(const std::string& token, long long& value) {
   return first != last && error == std::errc() && end == last;
 }
 
+/// A count (an element count, OFF's counts, a face's vertex count): digits with an optional
+/// leading '+', never a minus sign ("-0" is no count, though from_chars reads it as 0).
+bool parse_count(const std::string& token, long long& value) {
+  return !token.empty() && token[0] != '-' && parse_integer(token, value) && value >= 0;
+}
+
 /// Checks a polygon (0-based indices) and appends its fan triangles. `where` prefixes errors.
 template <class Fail>
 void add_polygon(ObjMesh& mesh, const std::vector<long long>& poly, std::size_t vertex_count, Fail fail) {
@@ -253,7 +259,7 @@ ObjMesh read_ply(std::istream& in, const std::string& source) {
     }
     if (t[0] == "element") {
       long long count = 0;
-      if (t.size() != 3 || !parse_integer(t[2], count) || count < 0)
+      if (t.size() != 3 || !parse_count(t[2], count))
         throw ParseError(source, n, "expected 'element NAME COUNT' with COUNT a non-negative integer");
       for (const PlyElement& e : elements)
         if (e.name == t[1]) throw ParseError(source, n, "a second element '" + t[1] + "' (first on line " + std::to_string(e.line) + ")");
@@ -476,8 +482,8 @@ ObjMesh read_off(std::istream& in, const std::string& source) {
   if (!t.empty() && t[0] == "BINARY") throw ParseError(source, lines.line(), "binary OFF is not supported");
   if (t.empty() && !next_tokens(t)) throw ParseError(source, lines.line(), "the file ends before the counts line");
   long long nv = 0, nf = 0, ne = 0;
-  if (t.size() < 2 || t.size() > 3 || !parse_integer(t[0], nv) || !parse_integer(t[1], nf) ||
-      (t.size() == 3 && !parse_integer(t[2], ne)) || nv < 0 || nf < 0 || ne < 0)
+  if (t.size() < 2 || t.size() > 3 || !parse_count(t[0], nv) || !parse_count(t[1], nf) ||
+      (t.size() == 3 && !parse_count(t[2], ne)))
     throw ParseError(source, lines.line(), "expected the counts 'vertices faces [edges]' (non-negative integers)");
   if (nv > INT_MAX) throw ParseError(source, lines.line(), "more than INT_MAX vertices");
   ObjMesh mesh;
@@ -499,7 +505,7 @@ ObjMesh read_off(std::istream& in, const std::string& source) {
       throw ParseError(source, lines.line(), "the file ends after " + std::to_string(i) + " of the " + std::to_string(nf) + " faces");
     const std::size_t n = lines.line();
     long long count = 0;
-    if (!parse_integer(t[0], count) || count < 0) throw ParseError(source, n, "the face's vertex count '" + t[0] + "' is not a non-negative integer");
+    if (!parse_count(t[0], count)) throw ParseError(source, n, "the face's vertex count '" + t[0] + "' is not a non-negative integer");
     if (t.size() < static_cast<std::size_t>(count) + 1 || t.size() > static_cast<std::size_t>(count) + 5)
       throw ParseError(source, n, "face of " + std::to_string(count) + " vertices with " + std::to_string(t.size() - 1) +
                                       " numbers (expected the indices and at most a 4-number colour)");
