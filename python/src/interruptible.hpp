@@ -3,9 +3,10 @@
 // handler raises (KeyboardInterrupt for Ctrl-C) it sets the call's cancellation flag
 // (SceneOptions::cancel, or the batch loop's CancelScope), waits for the workers to stop (they
 // stop between chunks of a few hundred queries, the loop's oneTBB task group cancelled: well
-// under a second) and raises that exception. The helper thread stays a plain std::thread: the
-// interpreter's thread must stay free to poll for signals, and oneTBB may have no worker to
-// spare (one core). oneTBB keeps its idle worker threads for the next call.
+// under a second) and raises that exception. The helper is a plain thread, not a oneTBB worker:
+// the interpreter's thread must stay free to poll for signals, and oneTBB may have no worker to
+// spare (one core); each calling thread keeps its helper for its next call (caller_helper.hpp).
+// oneTBB keeps its idle worker threads for the next call.
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -14,10 +15,12 @@
 #include <chrono>
 #include <exception>
 #include <future>
+#include <memory>
 #include <system_error>
 #include <thread>
 #include <utility>
 
+#include "caller_helper.hpp"
 #include "exactccd/scene.hpp"
 #include "scene/parallel.hpp"
 
@@ -35,18 +38,20 @@ auto interruptible(F&& f) {
   namespace py = pybind11;
   using Result = decltype(f(static_cast<const std::atomic<bool>*>(nullptr)));
   std::atomic<bool> cancel{false};
-  std::packaged_task<Result()> task([&] { return f(&cancel); });
-  std::future<Result> result = task.get_future();
+  // Shared: the helper destroys its copy of the task after the result is set.
+  const auto task = std::make_shared<std::packaged_task<Result()>>([&] { return f(&cancel); });
+  std::future<Result> result = task->get_future();
   bool interrupted = false;
   {
     py::gil_scoped_release release;
-    std::thread helper;
+    bool on_helper = true;
     try {
-      helper = std::thread(std::ref(task));
+      caller_helper().post([task] { (*task)(); });
     } catch (const std::system_error&) {
-      task();  // no thread to spare: here, not interruptible
+      on_helper = false;
+      (*task)();  // no thread to spare: here, not interruptible
     }
-    while (helper.joinable() && result.wait_for(kSignalPollInterval) != std::future_status::ready) {
+    while (on_helper && result.wait_for(kSignalPollInterval) != std::future_status::ready) {
       py::gil_scoped_acquire acquire;
       if (PyErr_CheckSignals() != 0) {  // the handler raised: its exception is now set
         interrupted = true;
@@ -54,7 +59,7 @@ auto interruptible(F&& f) {
         break;
       }
     }
-    if (helper.joinable()) helper.join();  // the workers stop soon after the flag is set
+    result.wait();  // the workers stop soon after the flag is set
   }
   if (interrupted) throw py::error_already_set();
   return result.get();

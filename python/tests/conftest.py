@@ -15,6 +15,17 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 DATA = pathlib.Path(os.environ.get("EXACTCCD_DATA", ROOT / "data"))
 TEST_DATA = pathlib.Path(os.environ.get("EXACTCCD_TEST_DATA", ROOT / "tests" / "data"))
 
+# After a long call is interrupted or its callers stopped: nothing of the call may still run.
+# A call still running keeps at least one thread busy (about 1 CPU second per second); idle
+# threads (oneTBB's workers, the callers' kept helpers) are blocked and use none, once oneTBB's
+# workers have finished the short spin before they sleep. So: wait IDLE_SETTLE_S, then the
+# whole process's CPU time over IDLE_WINDOW_S must stay under IDLE_CPU_S, a quarter of one
+# busy thread (margin for a loaded machine's accounting; 0.107 s was once seen in the half
+# second straight after a stop, with no settling).
+IDLE_SETTLE_S = 0.5
+IDLE_WINDOW_S = 1.0
+IDLE_CPU_S = 0.25
+
 # kind (batch function stem) -> (file-name suffix, CLI --kind, rows per query, coordinates)
 KINDS = {
     "vertex_face": ("vertex-face", "vf", 8, 3),
