@@ -33,3 +33,33 @@ def test_repeated_scene_calls_keep_memory_flat():
     # A per-call leak of the old size would be about 34 MB here; the margin is for the
     # allocator's and pytest's own noise.
     assert grown < 4096, f"resident memory grew by {grown} KiB over 2000 calls"
+
+
+def test_a_forked_child_makes_long_calls_of_its_own():
+    # The parent's kept helper does not exist in a child forked after a long call (only the
+    # forking thread is copied); the child's long calls start a helper of their own.
+    import os
+
+    V0, V1, F = cloth(20)
+    expected = exactccd.SceneBroadPhase(V0, V1, F, min_distance=1e-3, threads=1).find_collisions()
+    reader, writer = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: answer, report through the pipe, leave without pytest's cleanup
+        ok = False
+        try:
+            got = exactccd.SceneBroadPhase(V0, V1, F, min_distance=1e-3, threads=1).find_collisions()
+            ok = repr(got) == repr(expected)
+        finally:
+            os.write(writer, b"same" if ok else b"differs")
+            os._exit(0)
+    os.close(writer)
+    import select
+    import signal
+
+    if not select.select([reader], [], [], 60)[0]:  # a child waiting on a helper that is not there
+        os.kill(pid, signal.SIGKILL)
+    with os.fdopen(reader, "rb") as pipe:
+        said = pipe.read()
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0
+    assert said == b"same", said
