@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "io/mesh_file.hpp"
@@ -23,6 +24,13 @@ using Tri = std::array<int, 3>;
 ObjMesh obj_tetra() {
   std::istringstream in("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   return read_obj(in, "tetra.obj");
+}
+
+/// text with the first occurrence of `from` (which must occur) replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("test text has no '" + from + "'");
+  return text.replace(at, from.size(), to);
 }
 
 std::string mesh_path(const std::string& name) { return std::string(EXACTCCD_SOURCE_DIR) + "/tests/data/meshes/" + name; }
@@ -205,9 +213,7 @@ TEST(MeshFormats, PlyHeaderAndAsciiErrorsNameTheLine) {
                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   ASSERT_EQ(ply(ok).triangles.size(), 1u);
   const auto with = [&](const std::string& from, const std::string& to) {
-    std::string s = ok;
-    s.replace(s.find(from), from.size(), to);
-    return ply_error(s);
+    return ply_error(replaced(ok, from, to));
   };
   EXPECT_EQ(with("property float y", "property float16 y"), "m.ply:5: unknown property type 'float16'");
   EXPECT_EQ(with("list uchar int", "list float int"), "m.ply:8: list count type 'float' is not an integer type");
@@ -241,9 +247,7 @@ TEST(MeshFormats, OffFormsAndErrors) {
   const std::string ok = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   EXPECT_EQ(off_error(ok), "");
   const auto with = [&](const std::string& from, const std::string& to) {
-    std::string s = ok;
-    s.replace(s.find(from), from.size(), to);
-    return off_error(s);
+    return off_error(replaced(ok, from, to));
   };
   EXPECT_EQ(with("3 0 1 2", "3 0 1 3"), "m.off:6: face vertex index 3 out of range (the file has 3 vertices, indices from 0)");
   EXPECT_EQ(with("1 0 0\n", "1 inf 0\n"), "m.off:4: coordinate 'inf' is not finite (NaN or infinity)");
@@ -393,9 +397,7 @@ TEST(MeshFormats, PlusMinusIsNoNumber) {
   EXPECT_EQ(off_error("OFF\n+-0 0\n"), "m.off:2: expected the counts 'vertices faces [edges]' (non-negative integers)");
   const std::string off = "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   const auto off_with = [&](const std::string& from, const std::string& to) {
-    std::string s = off;
-    s.replace(s.find(from), from.size(), to);
-    return off_error(s);
+    return off_error(replaced(off, from, to));
   };
   EXPECT_EQ(off_with("1 0 0", "+-1 0 0"), "m.off:4: coordinate '+-1' is not a number");
   EXPECT_EQ(off_with("1 0 0", "++1 0 0"), "m.off:4: coordinate '++1' is not a number");
@@ -405,9 +407,7 @@ TEST(MeshFormats, PlusMinusIsNoNumber) {
                                "property char c\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
                                "0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n";
   const auto ply_with = [&](const std::string& from, const std::string& to) {
-    std::string s = ply_text;
-    s.replace(s.find(from), from.size(), to);
-    return ply_error(s);
+    return ply_error(replaced(ply_text, from, to));
   };
   EXPECT_EQ(ply_with("1 0 0 1", "+-1 0 0 1"), "m.ply:12: property x: value '+-1' is not a number");
   EXPECT_EQ(ply_with("1 0 0 1", "1 +-0.5 0 1"), "m.ply:12: property y: value '+-0.5' is not a number");
