@@ -12,7 +12,7 @@
 // at d = 0 and d = 1e-3 (absolute; the naive cubic answers the contact question only, so its
 // loop is the same at both d: the ratio is the cost of the exact answer against the cubic's).
 //
-//   build/batch_bench [--rounds N] [--only WORKLOAD] [--data DIR] [--funnel DIR]
+//   build/batch_bench [--rounds N] [--only WORKLOAD] [--distance D] [--data DIR] [--funnel DIR]
 // prints one row per workload and d: queries, colliding share, the median ns per query of each
 // method and the ratios find_collisions / naive and earliest_toi / naive.
 #include <algorithm>
@@ -163,13 +163,15 @@ int main(int argc, char** argv) {
   int rounds = 7;
   fs::path data = EXACTCCD_DATA_DIR, funnel = EXACTCCD_SCALABLE_SAMPLE_DIR;
   std::string only;
+  std::vector<double> distances{0.0, 1e-3};
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--rounds")) rounds = std::max(1, std::atoi(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--only")) only = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--distance")) distances = {std::atof(argv[i + 1])};
     else if (!std::strcmp(argv[i], "--data")) data = argv[i + 1];
     else if (!std::strcmp(argv[i], "--funnel")) funnel = argv[i + 1];
     else {
-      std::fprintf(stderr, "usage: batch_bench [--rounds N] [--only WORKLOAD] [--data DIR] [--funnel DIR]\n");
+      std::fprintf(stderr, "usage: batch_bench [--rounds N] [--only WORKLOAD] [--distance D] [--data DIR] [--funnel DIR]\n");
       return 2;
     }
   }
@@ -183,7 +185,7 @@ int main(int argc, char** argv) {
     std::printf("funnel: skipped, no %s/cloth-funnel/queries\n", funnel.string().c_str());
   std::printf("%-7s %-6s %8s %7s %9s %9s %9s %9s %9s   (ns/query, medians of %d rounds, 1 thread)\n", "work",
               "d", "queries", "collide", "naive", "find", "earliest", "find/nv", "toi/nv", rounds);
-  for (const double d : {0.0, 1e-3})
+  for (const double d : distances)
     for (const auto& w : workloads)
       if (only.empty() || only == w.name) measure(w, d, rounds);
 }
