@@ -372,6 +372,26 @@ TEST(MeshFormats, OffStartingWithACommentIsOff) {
             ::testing::TempDir() + "exactccd-mesh-formats-comment.obj: the content is OFF, but the extension says OBJ");
 }
 
+// Found by fuzz_read_off's third long run: format detection looked for OFF's keyword in the
+// first 4 kB only, so an OFF file whose comments fill them was "not OFF" to read_mesh while
+// read_off reads it (the keyword is now found after comments of any length, and the words may
+// hold any bytes, as read_off takes them).
+TEST(MeshFormats, OffAfterALongCommentIsOff) {
+  const std::string off = "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  for (const std::size_t length : {4000, 4095, 4096, 5000, 100000}) {
+    const std::string path = temp_file("long-comment.off", "# " + std::string(length, 'c') + "\n" + off);
+    EXPECT_EQ(detect_mesh_format(path), MeshFormat::off) << length;
+    EXPECT_EQ(read_mesh(path).triangles, (std::vector<Tri>{{0, 1, 2}})) << length;
+  }
+  const std::string many_comments = temp_file("comments.off", std::string(3000, '#') + "\n" + std::string(2000, '\n') + off);
+  EXPECT_EQ(detect_mesh_format(many_comments), MeshFormat::off);
+  // An OBJ file with a long comment stays OBJ; a long comment before no OFF keyword is not OFF.
+  EXPECT_EQ(detect_mesh_format(temp_file("long-comment.obj", "# " + std::string(5000, 'c') + "\nv 0 0 0\n")),
+            MeshFormat::obj);
+  EXPECT_EQ(read_mesh_error(temp_file("long-comment-no-keyword.off", "# " + std::string(5000, 'c') + "\n3 1\n")),
+            ::testing::TempDir() + "exactccd-mesh-formats-long-comment-no-keyword.off: the content is not OFF (text without the OFF header)");
+}
+
 // An empty OFF file's error named line 0 (lines are 1-based).
 TEST(MeshFormats, EmptyOffNamesLineOne) { EXPECT_EQ(off_error(""), "m.off:1: empty OFF file"); }
 

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <istream>
+#include <limits>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "io/input_file.hpp"
@@ -22,6 +24,7 @@ struct FilePrefix {
   std::string raw;
   std::string bytes;
   std::optional<std::uintmax_t> size;
+  std::string first_word;  ///< after blank space and `#` comment lines, however long (first_word_of)
 };
 
 constexpr std::size_t kPrefixBytes = 4096;
@@ -34,17 +37,30 @@ bool is_ply(const FilePrefix& p) {
   return starts_with(p.bytes, "ply\n") || starts_with(p.bytes, "ply\r") || p.bytes == "ply";
 }
 
-/// The first word, after blank lines and `#` comments (as read_off reads them), is OFF with its
-/// optional prefixes (ST, C, N, 4, n: e.g. COFF, NOFF, STOFF).
-bool is_off(const FilePrefix& p) {
-  std::size_t begin = 0;
-  for (;;) {
-    begin = std::min(p.bytes.find_first_not_of(" \t\r\n\f\v", begin), p.bytes.size());
-    if (begin == p.bytes.size() || p.bytes[begin] != '#') break;
-    begin = std::min(p.bytes.find('\n', begin), p.bytes.size());
+/// The first word of `in`, after blank space and `#` comments (as read_off reads them: a `#`
+/// where a word would start comments out the rest of its line), at most 16 characters, read as
+/// a stream: a comment may be longer than the prefix (a 5 kB first comment once made an OFF
+/// file "not OFF"; found by fuzz_read_off).
+std::string first_word_of(std::istream& in) {
+  const auto space = [](int c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; };
+  for (int c = in.get(); c != std::char_traits<char>::eof(); c = in.get()) {
+    if (space(c)) continue;
+    if (c == '#') {
+      in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+      continue;
+    }
+    std::string word(1, static_cast<char>(c));
+    for (c = in.peek(); word.size() < 16 && c != std::char_traits<char>::eof() && !space(c) && c != '#'; c = in.peek())
+      word += static_cast<char>(in.get());
+    return word;
   }
-  const std::size_t end = std::min(p.bytes.find_first_of(" \t\r\n\f\v#", begin), p.bytes.size());
-  const std::string word = p.bytes.substr(begin, end - begin);
+  return {};
+}
+
+/// The first word, after blank lines and `#` comments, is OFF with its optional prefixes (ST, C,
+/// N, 4, n: e.g. COFF, NOFF, STOFF).
+bool is_off(const FilePrefix& p) {
+  const std::string& word = p.first_word;
   if (word.size() < 3 || word.size() > 8 || word.compare(word.size() - 3, 3, "OFF") != 0) return false;
   return std::all_of(word.begin(), word.end() - 3, [](char c) { return std::string("STCN4n").find(c) != std::string::npos; });
 }
@@ -118,6 +134,9 @@ FilePrefix read_prefix(const std::string& path) {
   p.raw.resize(static_cast<std::size_t>(file.stream().gcount()));
   file.check_read();
   p.bytes = starts_with(p.raw, kByteOrderMark) ? p.raw.substr(kByteOrderMark.size()) : p.raw;
+  InputFile words(path, ByteOrderMark::skip);
+  p.first_word = first_word_of(words.stream());
+  words.check_read();
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (!ec) p.size = size;
