@@ -8,11 +8,15 @@
 #endif
 
 #include <algorithm>
+#include <array>
 #include <climits>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "numeric/fp_environment.hpp"
+#include "scene/coplanar_blocks.hpp"
 #include "scene/narrow_phase.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
@@ -204,9 +208,21 @@ struct CandidateSetRange {
 
   /// Reads candidates [begin, end) in order, each checked as it is read (indices and sides,
   /// then the box test, then shared indices), and calls visit(sides, k) for those whose boxes
-  /// overlap; false at the first invalid candidate or when visit returns false.
+  /// overlap and, at d = 0, that the batched stage 1 does not exclude (CoplanarBlocks: visited
+  /// a block at a time); false at the first invalid candidate or when visit returns false.
   template <class Visit>
   bool scan(std::size_t begin, std::size_t end, Visit&& visit) const {
+    using Blocks = scene::CoplanarBlocks<Vec3, std::size_t>;
+    if (!Blocks::applies(params)) return scan_lists(begin, end, visit);
+    const scene::PairTests<Vec3> tests(x0, x1, params);
+    Blocks blocks(tests);
+    const auto add = [&](const PairSides& r, std::size_t k) { return blocks.add(r, k, visit); };
+    return scan_lists(begin, end, add) && blocks.flush(visit);
+  }
+
+  /// scan() without the batched stage.
+  template <class Visit>
+  bool scan_lists(std::size_t begin, std::size_t end, Visit& visit) const {
     while (begin < end) {
       const std::size_t i = list_of(begin), stop = std::min(end, offsets[i + 1]);
       const bool go_on = i == 0   ? scan_rows<1>(set.vertex_face, i, begin, stop, visit)

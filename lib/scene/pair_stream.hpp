@@ -68,15 +68,16 @@ inline void add_stream_stats(const std::vector<StreamWorker>& workers, std::chro
   stats.workers = ran;
 }
 
-/// Calls decide(pair, worker) for every candidate pair of the trees (BroadPhaseTrees::visit),
-/// on up to `threads` threads, until some call returns false (then every worker stops after
-/// its current pair), with `buffers` for the pieces of work and the workers' batches. `stats`,
-/// when not null, receives the candidate counts per kind and the loop's times. decide must be
-/// safe to call from several workers at once (per-worker state indexed by `worker`, below
-/// worker_slots(threads) taken where stream_pairs is called).
-template <class Decide>
-void stream_pairs(const BroadPhaseTrees& trees, unsigned threads, Decide&& decide, StreamBuffers& buffers,
-                  StepStats* stats = nullptr) {
+/// Calls decide(batch, worker) for every batch of candidate pairs of the trees
+/// (BroadPhaseTrees::visit; a std::vector<FoundPair> of at most kStreamBatch pairs), on up to
+/// `threads` threads, until some call returns false (then every worker stops after its current
+/// batch), with `buffers` for the pieces of work and the workers' batches. `stats`, when not
+/// null, receives the candidate counts per kind and the loop's times. decide must be safe to
+/// call from several workers at once (per-worker state indexed by `worker`, below
+/// worker_slots(threads) taken where stream_pair_batches is called).
+template <class DecideBatch>
+void stream_pair_batches(const BroadPhaseTrees& trees, unsigned threads, DecideBatch&& decide, StreamBuffers& buffers,
+                         StepStats* stats = nullptr) {
   using Clock = std::chrono::steady_clock;
   const auto wall_start = Clock::now();
   trees.pair_tasks(threads, buffers.tasks, buffers.nodes, buffers.scratch);
@@ -97,11 +98,7 @@ void stream_pairs(const BroadPhaseTrees& trees, unsigned threads, Decide&& decid
     bool go_on = true;
     const auto flush = [&] {
       const double start = stats ? thread_cpu_seconds() : 0.0;
-      for (const FoundPair& p : me.batch)
-        if (!decide(p, w)) {
-          go_on = false;
-          break;
-        }
+      go_on = decide(static_cast<const std::vector<FoundPair>&>(me.batch), w);
       me.batch.clear();
       if (stats) me.narrow += thread_cpu_seconds() - start;
       return go_on;
@@ -117,6 +114,21 @@ void stream_pairs(const BroadPhaseTrees& trees, unsigned threads, Decide&& decid
     return go_on;
   });
   if (stats) add_stream_stats(workers, Clock::now() - wall_start, *stats);
+}
+
+/// stream_pair_batches with decide(pair, worker) called for each pair of a batch in turn (until
+/// one call returns false).
+template <class Decide>
+void stream_pairs(const BroadPhaseTrees& trees, unsigned threads, Decide&& decide, StreamBuffers& buffers,
+                  StepStats* stats = nullptr) {
+  stream_pair_batches(
+      trees, threads,
+      [&](const std::vector<FoundPair>& batch, unsigned w) {
+        for (const FoundPair& p : batch)
+          if (!decide(p, w)) return false;
+        return true;
+      },
+      buffers, stats);
 }
 
 }  // namespace exactccd::scene

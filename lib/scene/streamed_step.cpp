@@ -4,8 +4,10 @@
 #include <chrono>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "numeric/fp_environment.hpp"
+#include "scene/coplanar_blocks.hpp"
 #include "scene/narrow_phase.hpp"
 #include "scene/pair_stream.hpp"
 #include "scene/parallel.hpp"
@@ -68,15 +70,32 @@ template <class SceneT>
 using PointOf = typename decltype(SceneT::positions_t0)::value_type;
 
 /// Streams the trees' pairs, as sides, into the question (narrow_phase.hpp; every pair handed
-/// over has overlapping boxes).
+/// over has overlapping boxes), at d = 0 through each worker's CoplanarBlocks (the batched
+/// stage 1: the pairs it excludes have no contact).
 template <class SceneT, class Question>
-void stream_into(const SceneT& scene, const SceneTrees& st, unsigned threads, Question& question, StepStats* stats) {
+void stream_into(const SceneT& scene, const SceneTrees& st, const PairTests<PointOf<SceneT>>& tests, unsigned threads,
+                 Question& question, StepStats* stats) {
   const Kept<StreamBuffers>::Loan kept(&st.stream_buffers());
   StreamBuffers own;  // when another stream holds the kept ones (nothing allocated otherwise)
-  stream_pairs(
+  StreamBuffers& buffers = kept.get() != nullptr ? *kept.get() : own;
+  using Blocks = CoplanarBlocks<PointOf<SceneT>, FoundPair>;
+  if (!Blocks::applies(tests.params())) {
+    stream_pairs(
+        st.trees(), threads,
+        [&](const FoundPair& p, unsigned w) { return question(sides_of(scene, st.topology(), p), p, w); }, buffers,
+        stats);
+    return;
+  }
+  stream_pair_batches(
       st.trees(), threads,
-      [&](const FoundPair& p, unsigned w) { return question(sides_of(scene, st.topology(), p), p, w); },
-      kept.get() != nullptr ? *kept.get() : own, stats);
+      [&](const std::vector<FoundPair>& batch, unsigned w) {
+        Blocks blocks(tests);  // on this worker's stack: nothing allocated
+        const auto visit = [&](const PairSides& r, const FoundPair& p) { return question(r, p, w); };
+        for (const FoundPair& p : batch)
+          if (!blocks.add(sides_of(scene, st.topology(), p), p, visit)) return false;
+        return blocks.flush(visit);
+      },
+      buffers, stats);
 }
 
 template <class SceneT>
@@ -84,7 +103,7 @@ std::vector<Collision> find_in(const SceneT& scene, const SceneTrees& st, const 
                                StepStats* stats) {
   const PairTests<PointOf<SceneT>> tests(scene.positions_t0, scene.positions_t1, params);
   CollectCollisions<PointOf<SceneT>, FoundPair> question(tests, threads, /*boxes_checked=*/true);
-  stream_into(scene, st, threads, question, stats);
+  stream_into(scene, st, tests, threads, question, stats);
   std::vector<Collision> all;
   for (const auto& [p, toi] : question.take()) all.push_back(collision_of(st.topology(), p, toi));
   std::sort(all.begin(), all.end(), [](const Collision& a, const Collision& b) { return key(a) < key(b); });
@@ -96,7 +115,7 @@ std::optional<TimeInterval> earliest_in(const SceneT& scene, const SceneTrees& s
                                         unsigned threads, StepStats* stats) {
   const PairTests<PointOf<SceneT>> tests(scene.positions_t0, scene.positions_t1, params);
   EarliestCollision<PointOf<SceneT>> question(tests, /*boxes_checked=*/true);
-  stream_into(scene, st, threads, question, stats);
+  stream_into(scene, st, tests, threads, question, stats);
   return question.result();
 }
 
@@ -104,7 +123,7 @@ template <class SceneT>
 bool any_in(const SceneT& scene, const SceneTrees& st, const CcdParams& params, unsigned threads, StepStats* stats) {
   const PairTests<PointOf<SceneT>> tests(scene.positions_t0, scene.positions_t1, params);
   AnyCollision<PointOf<SceneT>> question(tests, /*boxes_checked=*/true);
-  stream_into(scene, st, threads, question, stats);
+  stream_into(scene, st, tests, threads, question, stats);
   return question.hit();
 }
 

@@ -30,7 +30,10 @@ def test_cli_version():
     if exe is None:
         pytest.skip("the exactccd CLI is not built (set EXACTCCD_CLI)")
     out = subprocess.run([exe, "--version"], check=True, capture_output=True, text=True).stdout
-    assert out == f"exactccd {exactccd.__version__}\n"
+    lines = out.splitlines()
+    assert lines[0] == f"exactccd {exactccd.__version__}", out
+    # The SIMD level of the batched stages, and why (docs/performance.md, "Batched stages").
+    assert len(lines) == 2 and lines[1].split()[:2] in (["simd:", "sse2"], ["simd:", "avx2"], ["simd:", "avx512"]), out
 
 
 def test_installed_package_metadata():

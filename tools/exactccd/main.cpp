@@ -8,6 +8,7 @@
 #include "cli_common.hpp"
 #include "exactccd/exactccd.h"
 #include "io/input_file.hpp"
+#include "numeric/simd_level.hpp"
 #include "subcommands.hpp"
 
 namespace {
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
   }
   if (first == "--version") {
     std::cout << "exactccd " << exactccd_version() << "\n";  // the library's: one version (CMake's)
+    std::cout << "simd: " << exactccd::numeric::simd_level_text() << "\n";  // the batched stages' level
     return kExitOk;
   }
   for (const Subcommand& s : kSubcommands) {

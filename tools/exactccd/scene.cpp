@@ -16,6 +16,7 @@
 #include "output_file.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
+#include "numeric/simd_level.hpp"
 #include "scene/step_stats.hpp"
 #include "scene/streamed_step.hpp"
 #include "subcommands.hpp"
@@ -146,7 +147,8 @@ std::string stats_text(const StatsLine& s) {
       << "time total                " << fixed(s.total_seconds, 3) << " s\n"
       << "candidates per kind       " << t.candidates[0] << " vf, " << t.candidates[1] << " ee, " << t.candidates[2]
       << " pe, " << t.candidates[3] << " pp\n"
-      << "peak memory               " << fixed(s.peak_mib, 1) << " MiB (peak resident set of the process)\n";
+      << "peak memory               " << fixed(s.peak_mib, 1) << " MiB (peak resident set of the process)\n"
+      << "simd level                " << numeric::simd_level_text() << " (the batched stages')\n";
   return out.str();
 }
 
@@ -161,7 +163,8 @@ std::string stats_json(const StatsLine& s) {
       << ", \"intersection_free_t1_s\": " << fixed(s.free1_seconds, 6) << ", \"total_s\": " << fixed(s.total_seconds, 6)
       << ", \"candidates\": {\"vf\": " << t.candidates[0] << ", \"ee\": " << t.candidates[1]
       << ", \"pe\": " << t.candidates[2] << ", \"pp\": " << t.candidates[3]
-      << "}, \"peak_rss_mib\": " << fixed(s.peak_mib, 1) << "}";
+      << "}, \"peak_rss_mib\": " << fixed(s.peak_mib, 1) << ", \"simd\": \""
+      << numeric::simd_level_name(numeric::simd_level()) << "\"}";
   return out.str();
 }
 

@@ -1,0 +1,203 @@
+// Stage 1 of the contact question on a block of queries (filter/volume_block.hpp) against the
+// scalar stage 1 (filter::volume_excluded), query by query, at every SIMD level this CPU has:
+// every vertex-face and edge-edge query of the bundled data, of tests/data and of the shared
+// sample (skipped with a note where absent), the wide-exponent families (subnormals next to
+// 2^1000) and random queries over the whole exponent range (underflowing and overflowing
+// products), in blocks of 0, 1, 3, 5, 7, 9, 15 and 16 lanes (the vector widths 2, 4, 8 plus and
+// minus one), each block filled over the lanes of the previous one (stale lanes must not count).
+// Both answers must occur in every source. Also: the level the environment variable
+// EXACTCCD_SIMD forces (CTest runs this file, the candidate API's tests and the scene
+// environment tests once per level: tests/CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "filter/volume_block.hpp"
+#include "filter/volume_exclusion.hpp"
+#include "fuzz/families.hpp"
+#include "io/benchmark_csv.hpp"
+
+namespace exactccd {
+namespace {
+
+namespace fs = std::filesystem;
+using numeric::SimdLevel;
+using Rows = std::array<Vec3, 8>;
+
+/// Queries of both kinds from one source.
+struct Cases {
+  std::vector<Rows> vertex_face, edge_edge;
+};
+
+/// Every query of a benchmark file whose name says its kind (vertex-face or edge-edge).
+void add_file(const fs::path& path, Cases& out) {
+  const std::string name = path.filename().string();
+  const bool vf = name.find("vertex-face") != std::string::npos, ee = name.find("edge-edge") != std::string::npos;
+  if (path.extension() != ".csv" || !(vf || ee) || name.find("2d") != std::string::npos ||
+      name.find("malformed") != std::string::npos || name.find("rigid") != std::string::npos)
+    return;
+  std::ifstream in(path);
+  const io::BenchmarkQueries q = io::read_benchmark_csv(in, path.string());
+  for (const auto& r : q.rows)
+    if (const auto rows = io::exact_double_rows(r)) (vf ? out.vertex_face : out.edge_edge).push_back(*rows);
+}
+
+Cases bundled_cases() {
+  Cases c;
+  const fs::path root(EXACTCCD_SOURCE_DIR);
+  for (const fs::path& dir : {root / "data" / "sim", root / "data" / "catalogue", root / "data" / "families", root / "tests" / "data"})
+    for (const auto& e : fs::directory_iterator(dir)) add_file(e.path(), c);
+  return c;
+}
+
+Cases shared_cases() {
+  Cases c;
+  const fs::path sample = fs::path(EXACTCCD_SAMPLE_QUERIES_DIR) / "unit-tests";
+  if (!fs::exists(sample)) return c;
+  for (const auto& e : fs::recursive_directory_iterator(sample)) {
+    if (!e.is_regular_file()) continue;
+    // The sample's files are named data_*.csv inside a folder named by the kind.
+    const std::string kind = e.path().parent_path().filename().string();
+    std::ifstream in(e.path());
+    const io::BenchmarkQueries q = io::read_benchmark_csv(in, e.path().string());
+    for (const auto& r : q.rows)
+      if (const auto rows = io::exact_double_rows(r)) (kind == "vertex-face" ? c.vertex_face : c.edge_edge).push_back(*rows);
+  }
+  return c;
+}
+
+Cases wide_cases() {
+  Cases c;
+  std::mt19937_64 rng(2030);
+  for (const families::Family& f : families::all_families())
+    for (int style = 0; style < families::kWideStyleCount; ++style)
+      for (int k : {0, 20, 52})
+        for (bool toward : {true, false})
+          if (const auto inst = families::make_wide(f, k, toward, static_cast<families::WideStyle>(style), rng))
+            std::visit(
+                [&](const auto& q) {
+                  using Query = std::decay_t<decltype(q)>;
+                  if constexpr (std::is_same_v<Query, VertexFaceQuery>) c.vertex_face.push_back(rows(q));
+                  if constexpr (std::is_same_v<Query, EdgeEdgeQuery>) c.edge_edge.push_back(rows(q));
+                },
+                inst->query);
+  return c;
+}
+
+/// Random queries at scales 2^-1074 .. 2^1023: products underflow or overflow in some lanes;
+/// some with a static point or two equal points (V near or exactly zero).
+Cases random_cases() {
+  Cases c;
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1074, 1023);
+  for (int n = 0; n < 4000; ++n) {
+    Rows r;
+    const int e = n % 2 == 0 ? exponent(rng) : 0;
+    for (Vec3& p : r) p = {std::ldexp(unit(rng), e), std::ldexp(unit(rng), e), std::ldexp(unit(rng), e)};
+    if (n % 5 == 1) r[7] = r[3];      // a static fourth point
+    if (n % 7 == 2) r[6] = r[5];      // two points equal at t1
+    if (n % 11 == 3) r[1].x = 0x1p1023; // one huge coordinate next to small ones
+    (n % 3 == 0 ? c.edge_edge : c.vertex_face).push_back(r);
+  }
+  return c;
+}
+
+/// Checks queries of one kind in blocks of `lanes` at `level` against the scalar stage 1, each
+/// block written over the previous one; returns how many the blocks exclude.
+template <class Query>
+std::size_t check_blocks(const std::vector<Rows>& queries, std::size_t lanes, SimdLevel level, const std::string& where) {
+  filter::VolumeBlock block;
+  std::size_t excluded = 0;
+  for (std::size_t first = 0; first < queries.size() || first == 0; first += lanes == 0 ? queries.size() + 1 : lanes) {
+    block.size = 0;
+    const std::size_t end = std::min(queries.size(), first + lanes);
+    for (std::size_t i = first; i < end; ++i) block.push(queries[i]);
+    const std::uint32_t got = filter::volume_excluded_block<Query>(block, level);
+    EXPECT_EQ(got >> block.size, 0u) << where << ": a lane beyond the block's size, at query " << first;
+    for (std::size_t i = first; i < end; ++i) {
+      const bool lane = (got >> (i - first) & 1u) != 0;
+      if (lane != filter::volume_excluded(from_rows<Query>(queries[i]))) {
+        ADD_FAILURE() << where << ", query " << i << ", " << lanes << " lanes, " << numeric::simd_level_name(level)
+                      << ": the block says " << (lane ? "excluded" : "not excluded") << ", the scalar stage not";
+        return excluded;  // one report per source and size
+      }
+      excluded += lane ? 1 : 0;
+    }
+  }
+  return excluded;
+}
+
+/// Checks both kinds of `cases` at `level` in every block size; both answers must occur.
+void check_cases(const Cases& cases, SimdLevel level, const std::string& where) {
+  for (const std::size_t lanes : {0, 1, 3, 5, 7, 9, 15, 16}) {
+    const std::size_t vf = check_blocks<VertexFaceQuery>(cases.vertex_face, lanes, level, where + " vertex-face");
+    const std::size_t ee = check_blocks<EdgeEdgeQuery>(cases.edge_edge, lanes, level, where + " edge-edge");
+    if (lanes == 0) continue;
+    EXPECT_GT(vf, 0u) << where;
+    EXPECT_LT(vf, cases.vertex_face.size()) << where;
+    EXPECT_GT(ee, 0u) << where;
+    EXPECT_LT(ee, cases.edge_edge.size()) << where;
+  }
+}
+
+class EveryLevel : public testing::TestWithParam<SimdLevel> {
+ protected:
+  void SetUp() override {
+    if (GetParam() > numeric::detected_simd_level())
+      GTEST_SKIP() << "this CPU has no " << numeric::simd_level_name(GetParam());
+  }
+};
+
+TEST_P(EveryLevel, EqualsTheScalarStageOnBundledData) { check_cases(bundled_cases(), GetParam(), "bundled"); }
+
+TEST_P(EveryLevel, EqualsTheScalarStageOnTheSharedSample) {
+  const Cases c = shared_cases();
+  if (c.vertex_face.empty()) GTEST_SKIP() << "shared sample not found under " << EXACTCCD_SAMPLE_QUERIES_DIR;
+  check_cases(c, GetParam(), "shared sample");
+}
+
+TEST_P(EveryLevel, EqualsTheScalarStageOnWideFamilies) { check_cases(wide_cases(), GetParam(), "wide families"); }
+
+TEST_P(EveryLevel, EqualsTheScalarStageOnRandomQueriesOfEveryScale) {
+  check_cases(random_cases(), GetParam(), "random");
+}
+
+INSTANTIATE_TEST_SUITE_P(Simd, EveryLevel, testing::Values(SimdLevel::sse2, SimdLevel::avx2, SimdLevel::avx512),
+                         [](const testing::TestParamInfo<SimdLevel>& info) {
+                           return std::string(numeric::simd_level_name(info.param));
+                         });
+
+// The level in use: EXACTCCD_SIMD names a level at most the CPU's (CTest's forced runs), or is
+// absent (the detected level).
+TEST(SimdLevel, IsTheDetectedOneOrTheOneForced) {
+  const char* asked = std::getenv("EXACTCCD_SIMD");
+  std::cout << "[ note     ] level in use: " << numeric::simd_level_text() << "\n";
+  if (asked == nullptr) {
+    EXPECT_EQ(numeric::simd_level(), numeric::detected_simd_level());
+    return;
+  }
+  const auto wanted = numeric::simd_level_named(asked);
+  ASSERT_TRUE(wanted.has_value()) << asked;
+  if (*wanted > numeric::detected_simd_level()) GTEST_SKIP() << "this CPU has no " << asked;
+  EXPECT_EQ(numeric::simd_level(), *wanted);
+}
+
+TEST(SimdLevel, NamesReadBack) {
+  for (const SimdLevel level : {SimdLevel::sse2, SimdLevel::avx2, SimdLevel::avx512})
+    EXPECT_EQ(numeric::simd_level_named(numeric::simd_level_name(level)), level);
+  EXPECT_FALSE(numeric::simd_level_named("avx").has_value());
+}
+
+}  // namespace
+}  // namespace exactccd
