@@ -10,10 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <climits>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 
 #include "numeric/fp_environment.hpp"
 #include "scene/coplanar_blocks.hpp"
