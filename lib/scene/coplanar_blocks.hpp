@@ -61,11 +61,7 @@ class CoplanarBlocks {
     const std::size_t lane = block.lanes.size;
     block.pair[lane] = r;
     block.id[lane] = id;
-    tests_.with_query(r, [&](const auto& q) {  // the question's own query, so its rows
-      using Query = std::decay_t<decltype(q)>;
-      if constexpr (std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>)
-        block.lanes.push(rows(q));
-    });
+    if constexpr (!PairTests<Point>::planar) block.lanes.push(tests_.four_point_rows(r));  // the question's query's rows
     return block.lanes.full() ? flush_block(block, visit) : true;
   }
 
