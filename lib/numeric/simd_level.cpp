@@ -5,13 +5,6 @@
 namespace exactccd::numeric {
 namespace {
 
-/// The level EXACTCCD_SIMD asks for, if it names one.
-std::optional<SimdLevel> requested_level() {
-  const char* name = std::getenv("EXACTCCD_SIMD");
-  if (name == nullptr) return std::nullopt;
-  return simd_level_named(name);
-}
-
 /// What simd_level() settles on, and the text that says why (computed once).
 struct Choice {
   SimdLevel level;
@@ -23,7 +16,7 @@ Choice choose() {
   const char* asked = std::getenv("EXACTCCD_SIMD");
   if (asked == nullptr) return {cpu, std::string(simd_level_name(cpu)) + " (detected)"};
   const std::string because = std::string("EXACTCCD_SIMD=") + asked + "; the CPU has " + simd_level_name(cpu);
-  const std::optional<SimdLevel> wanted = requested_level();
+  const std::optional<SimdLevel> wanted = simd_level_named(asked);
   if (!wanted) return {cpu, std::string(simd_level_name(cpu)) + " (" + because + ": not a level, ignored)"};
   if (*wanted > cpu) return {cpu, std::string(simd_level_name(cpu)) + " (" + because + ": not available, ignored)"};
   return {*wanted, std::string(simd_level_name(*wanted)) + " (" + because + ")"};

@@ -210,7 +210,7 @@ struct CandidateSetRange {
   /// a block at a time); false at the first invalid candidate or when visit returns false.
   template <class Visit>
   bool scan(std::size_t begin, std::size_t end, Visit&& visit) const {
-    using Blocks = scene::CoplanarBlocks<Vec3, std::size_t>;
+    using Blocks = scene::CoplanarBlocks<std::size_t>;
     if (!Blocks::applies(params)) return scan_lists(begin, end, visit);
     const scene::PairTests<Vec3> tests(x0, x1, params);
     Blocks blocks(tests);

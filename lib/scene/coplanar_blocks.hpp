@@ -10,30 +10,28 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <type_traits>
 
 #include "filter/volume_block.hpp"
 #include "scene/narrow_phase.hpp"
 
 namespace exactccd::scene {
 
-/// One worker's blocks of pairs (Id: what the question is told about a pair).
-template <class Point, class Id>
+/// One worker's blocks of 3D pairs (Id: what the question is told about a pair).
+template <class Id>
 class CoplanarBlocks {
  public:
   /// Blocks for the pairs of `tests` (their positions and question).
-  explicit CoplanarBlocks(const PairTests<Point>& tests) : tests_(tests) {}
+  explicit CoplanarBlocks(const PairTests<Vec3>& tests) : tests_(tests) {}
 
-  /// Whether the batched stage applies to the question: 3D pairs at d = 0 (within d > 0 needs no
+  /// Whether the batched stage applies to the question: d = 0 (within d > 0 needs no
   /// coplanarity).
-  static bool applies(const CcdParams& params) { return !PairTests<Point>::planar && !(params.min_distance > 0); }
+  static bool applies(const CcdParams& params) { return !(params.min_distance > 0); }
 
   /// Adds pair r (identified by id) to its kind's block, or hands it straight to visit(r, id)
   /// when it is of another kind; a full block is decided and its remaining pairs visited.
   /// Returns false as soon as visit does.
   template <class Visit>
   bool add(const PairSides& r, const Id& id, Visit& visit) {
-    if constexpr (PairTests<Point>::planar) return visit(r, id);
     if (r.kind == CollisionKind::vertex_face) return add_to(vertex_face_, r, id, visit);
     if (r.kind == CollisionKind::edge_edge) return add_to(edge_edge_, r, id, visit);
     return visit(r, id);
@@ -54,14 +52,14 @@ class CoplanarBlocks {
     std::array<Id, filter::kVolumeBlock> id{};
   };
   using VertexFaceBlock = Block<VertexFaceQuery>;
-  using EdgeEdgeBlock = Block<std::conditional_t<PairTests<Point>::planar, VertexFaceQuery, EdgeEdgeQuery>>;
+  using EdgeEdgeBlock = Block<EdgeEdgeQuery>;
 
   template <class B, class Visit>
   bool add_to(B& block, const PairSides& r, const Id& id, Visit& visit) {
     const std::size_t lane = block.lanes.size;
     block.pair[lane] = r;
     block.id[lane] = id;
-    if constexpr (!PairTests<Point>::planar) block.lanes.push(tests_.four_point_rows(r));  // the question's query's rows
+    block.lanes.push(tests_.four_point_rows(r));  // the rows of the question's own query
     return block.lanes.full() ? flush_block(block, visit) : true;
   }
 
@@ -76,7 +74,7 @@ class CoplanarBlocks {
     return true;
   }
 
-  const PairTests<Point>& tests_;
+  const PairTests<Vec3>& tests_;
   numeric::SimdLevel level_ = numeric::simd_level();
   VertexFaceBlock vertex_face_;
   EdgeEdgeBlock edge_edge_;

@@ -74,18 +74,10 @@ class PairTests {
   /// The question {d, tmax}.
   const CcdParams& params() const { return params_; }
 
-  /// The rows of a four-point pair's query (vertex-face, edge-edge) in rows(q) order, as
-  /// with_query makes it (pair_query: side 0's vertices then side 1's, at t0 then at t1), without
-  /// building the query.
+  /// The rows of a four-point pair's query (vertex-face, edge-edge: pair_rows, as with_query
+  /// builds the query), without building the query.
   std::array<Point, 8> four_point_rows(const PairSides& r) const {
-    std::array<Point, 8> rows;
-    std::size_t k = 0;
-    for (const Side& s : r.side)
-      for (int i = 0; i < s.n && k < 4; ++i, ++k) {
-        rows[k] = x0_[static_cast<std::size_t>(s.v[static_cast<std::size_t>(i)])];
-        rows[k + 4] = x1_[static_cast<std::size_t>(s.v[static_cast<std::size_t>(i)])];
-      }
-    return rows;
+    return pair_rows<4>(x0_, x1_, r.side[0].v.data(), r.side[0].n, r.side[1].v.data(), r.side[1].n);
   }
 
   /// f(query) for the pair's query of its kind (in 2D there are no vertex-face pairs).

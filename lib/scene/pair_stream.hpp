@@ -14,6 +14,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "scene/candidate_finder.hpp"
@@ -98,7 +99,7 @@ void stream_pair_batches(const BroadPhaseTrees& trees, unsigned threads, DecideB
     bool go_on = true;
     const auto flush = [&] {
       const double start = stats ? thread_cpu_seconds() : 0.0;
-      go_on = decide(static_cast<const std::vector<FoundPair>&>(me.batch), w);
+      go_on = decide(std::as_const(me.batch), w);
       me.batch.clear();
       if (stats) me.narrow += thread_cpu_seconds() - start;
       return go_on;

@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <stdexcept>
 #include <tuple>
-#include <utility>
 #include <vector>
 
 #include "exactccd/scene.hpp"
@@ -83,24 +82,31 @@ inline const std::vector<Triangle>& triangles_of(const Scene2d&) {
 inline Vec3 lift(const Vec3& p) { return p; }
 inline Vec3 lift(const Vec2& p) { return {p.x, p.y, 0.0}; }
 
-/// The query of a pair: the vertices of side a, then of side b (na + nb of them in all, the
-/// query's points per time), at t = 0 and then at t = 1, in the query's row order.
+/// The rows of a pair's query of n points per time: the vertices of side a, then of side b
+/// (na + nb = n of them), at t = 0 and then at t = 1, in the query's row order.
+template <std::size_t n, class Point>
+std::array<Point, 2 * n> pair_rows(const std::vector<Point>& x0, const std::vector<Point>& x1, const int* a, int na,
+                                   const int* b, int nb) {
+  if (na < 0 || nb < 0 || static_cast<std::size_t>(na + nb) != n)
+    throw std::logic_error("exactccd scene: a pair's sides do not make up its query");
+  // Every row written below (no zero fill first: a `rep stos` that showed in profiles), straight
+  // from the sides (no array of the vertices in between).
+  std::array<Point, 2 * n> r;
+  const auto put = [&](std::size_t k, int vertex) {
+    r[k] = x0[static_cast<std::size_t>(vertex)];
+    r[n + k] = x1[static_cast<std::size_t>(vertex)];
+  };
+  for (int i = 0; i < na; ++i) put(static_cast<std::size_t>(i), a[i]);
+  for (int i = 0; i < nb; ++i) put(static_cast<std::size_t>(na + i), b[i]);
+  return r;
+}
+
+/// The query of a pair (pair_rows as the query's rows).
 template <class Query, class Point>
 Query pair_query(const std::vector<Point>& x0, const std::vector<Point>& x1, const int* a, int na,
                  const int* b, int nb) {
   constexpr std::size_t n = std::tuple_size<decltype(rows(std::declval<Query>()))>::value / 2;
-  if (na < 0 || nb < 0 || static_cast<std::size_t>(na + nb) != n)
-    throw std::logic_error("exactccd scene: a pair's sides do not make up its query");
-  std::array<int, n> v{};  // the query's vertices in row order
-  for (int i = 0; i < na; ++i) v[static_cast<std::size_t>(i)] = a[i];
-  for (int i = 0; i < nb; ++i) v[static_cast<std::size_t>(na + i)] = b[i];
-  // Every row written below (no zero fill first: a `rep stos` that showed in profiles).
-  std::array<Point, 2 * n> r;
-  for (std::size_t i = 0; i < n; ++i) {
-    r[i] = x0[static_cast<std::size_t>(v[i])];
-    r[n + i] = x1[static_cast<std::size_t>(v[i])];
-  }
-  return from_rows<Query>(r);
+  return from_rows<Query>(pair_rows<n>(x0, x1, a, na, b, nb));
 }
 
 /// The vertex-face query of vertex v against triangle t of the scene.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -78,24 +79,25 @@ void stream_into(const SceneT& scene, const SceneTrees& st, const PairTests<Poin
   const Kept<StreamBuffers>::Loan kept(&st.stream_buffers());
   StreamBuffers own;  // when another stream holds the kept ones (nothing allocated otherwise)
   StreamBuffers& buffers = kept.get() != nullptr ? *kept.get() : own;
-  using Blocks = CoplanarBlocks<PointOf<SceneT>, FoundPair>;
-  if (!Blocks::applies(tests.params())) {
-    stream_pairs(
-        st.trees(), threads,
-        [&](const FoundPair& p, unsigned w) { return question(sides_of(scene, st.topology(), p), p, w); }, buffers,
-        stats);
-    return;
+  const auto each_pair = [&](const FoundPair& p, unsigned w) {
+    return question(sides_of(scene, st.topology(), p), p, w);
+  };
+  if constexpr (std::is_same_v<PointOf<SceneT>, Vec3>) {  // 3D: vertex-face and edge-edge pairs
+    if (CoplanarBlocks<FoundPair>::applies(tests.params())) {
+      stream_pair_batches(
+          st.trees(), threads,
+          [&](const std::vector<FoundPair>& batch, unsigned w) {
+            CoplanarBlocks<FoundPair> blocks(tests);  // on this worker's stack: nothing allocated
+            const auto visit = [&](const PairSides& r, const FoundPair& p) { return question(r, p, w); };
+            for (const FoundPair& p : batch)
+              if (!blocks.add(sides_of(scene, st.topology(), p), p, visit)) return false;
+            return blocks.flush(visit);
+          },
+          buffers, stats);
+      return;
+    }
   }
-  stream_pair_batches(
-      st.trees(), threads,
-      [&](const std::vector<FoundPair>& batch, unsigned w) {
-        Blocks blocks(tests);  // on this worker's stack: nothing allocated
-        const auto visit = [&](const PairSides& r, const FoundPair& p) { return question(r, p, w); };
-        for (const FoundPair& p : batch)
-          if (!blocks.add(sides_of(scene, st.topology(), p), p, visit)) return false;
-        return blocks.flush(visit);
-      },
-      buffers, stats);
+  stream_pairs(st.trees(), threads, each_pair, buffers, stats);
 }
 
 template <class SceneT>
