@@ -55,7 +55,7 @@ if(EXACTCCD_BUILD_TESTS)
   # The committed seed corpus holds what the generator writes now.
   add_executable(make_seed_corpus fuzz/make_seed_corpus.cpp)
   target_compile_options(make_seed_corpus PRIVATE ${EXACTCCD_WARNINGS})
-  target_link_libraries(make_seed_corpus PRIVATE exactccd_catalogue)
+  target_link_libraries(make_seed_corpus PRIVATE exactccd_generators)
   add_test(NAME fuzz.seed_corpus_fresh
     COMMAND ${CMAKE_COMMAND} -DGENERATOR=$<TARGET_FILE:make_seed_corpus>
             -DCORPUS=${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus -DWORK=${CMAKE_CURRENT_BINARY_DIR}/seed-corpus-check
@@ -71,7 +71,7 @@ if(EXACTCCD_BUILD_FUZZERS)
     add_executable(fuzz_${kind} fuzz/fuzz_${kind}.cpp)
     target_compile_options(fuzz_${kind} PRIVATE ${EXACTCCD_WARNINGS})
     target_link_options(fuzz_${kind} PRIVATE -fsanitize=fuzzer)
-    target_link_libraries(fuzz_${kind} PRIVATE exactccd_catalogue)
+    target_link_libraries(fuzz_${kind} PRIVATE exactccd_generators)
     # New inputs go to a scratch directory (the first one), never into the committed corpus.
     set(scratch ${CMAKE_CURRENT_BINARY_DIR}/fuzz-smoke/${kind})
     add_test(NAME fuzz.${kind}.smoke

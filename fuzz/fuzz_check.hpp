@@ -17,7 +17,7 @@
 #include <utility>
 
 #include "exactccd/exactccd.hpp"
-#include "fuzz/fuzz_input.hpp"
+#include "generators/fuzz_input.hpp"
 #include "kinds/primitive_kinds.hpp"
 
 namespace exactccd::fuzzing {

@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "fuzz/catalogue.hpp"
-#include "fuzz/families.hpp"
-#include "fuzz/fuzz_input.hpp"
+#include "generators/catalogue.hpp"
+#include "generators/families.hpp"
+#include "generators/fuzz_input.hpp"
 
 namespace {
 

@@ -12,6 +12,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)
+# Each ctest pass records the tests its build registers and those it runs; at the end
+# tools/check_test_sets.py fails unless every registered test ran in some pass.
+sets=build/ci-test-sets
+record_pass() {  # record_pass NAME BUILD_DIR [the pass's ctest selection...]
+  local name=$1 dir=$2; shift 2
+  mkdir -p "$sets"
+  ctest --test-dir "$dir" --show-only=json-v1 > "$sets/$name.registered.json"
+  ctest --test-dir "$dir" --show-only=json-v1 "$@" > "$sets/$name.ran.json"
+}
 
 echo "== [${SECONDS} s] Release build and tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEXACTCCD_WERROR=ON
@@ -20,6 +29,8 @@ cmake --build build -j"$jobs"
 # below (tools/test_pip_install.sh runs every one of them); here only without that pass.
 release_skip=()
 if [ "${EXACTCCD_SKIP_PIP:-0}" != "1" ]; then release_skip=(-E '^python\.test_'); fi
+rm -rf "$sets"
+record_pass release build "${release_skip[@]}"
 ctest --test-dir build --output-on-failure -j"$jobs" "${release_skip[@]}"
 
 if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
@@ -36,6 +47,7 @@ if [ "${EXACTCCD_SKIP_SANITIZERS:-0}" != "1" ]; then
   cmake --build build-asan -j"$jobs"
   # The tests labelled sanitizer-skip (tests/CMakeLists.txt says which and why: long runs of
   # code the other tests run here too) are left to the Release pass, to keep CI under 30 minutes.
+  record_pass sanitizers build-asan -LE sanitizer-skip
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE sanitizer-skip
 fi
@@ -47,6 +59,7 @@ if [ "${EXACTCCD_SKIP_FUZZERS:-0}" != "1" ]; then
         -DEXACTCCD_BUILD_FUZZERS=ON -DEXACTCCD_BUILD_TESTS=OFF -DEXACTCCD_BUILD_BENCHMARKS=OFF \
         -DEXACTCCD_WERROR=ON
   cmake --build build-fuzz-clang -j"$jobs"
+  record_pass fuzzers build-fuzz-clang -R '^fuzz\.'
   ctest --test-dir build-fuzz-clang --output-on-failure -j"$jobs" -R '^fuzz\.'
 fi
 if [ "${EXACTCCD_SKIP_PIP:-0}" != "1" ]; then
@@ -55,4 +68,8 @@ if [ "${EXACTCCD_SKIP_PIP:-0}" != "1" ]; then
   echo "== [${SECONDS} s] pip install . and pytest of the installed package (tools/test_pip_install.sh)"
   bash tools/test_pip_install.sh build-pip-test
 fi
+echo "== [${SECONDS} s] every registered test ran in some pass (tools/check_test_sets.py)"
+pip_pass=()
+if [ "${EXACTCCD_SKIP_PIP:-0}" != "1" ]; then pip_pass=(--pip-pass python/tests); fi
+python3 tools/check_test_sets.py "$sets" "${pip_pass[@]}"
 echo "== [${SECONDS} s] all passes done"

@@ -28,6 +28,13 @@ using RationalPointPoint2dQuery = PointPoint2dQueryT<mpq_class>;  ///< 2D point-
 struct RationalCcdParams {
   mpq_class min_distance = 0;  ///< d >= 0
   mpq_class tmax = 1;          ///< in (0, 1]
+
+  /// True for the contact question (d = 0), as CcdParams::contact_only.
+  bool contact_only() const { return !(min_distance > 0); }
+  /// True when the whole step is asked (tmax = 1), as CcdParams::whole_step.
+  bool whole_step() const { return tmax == 1; }
+  /// Contact over the whole step, as CcdParams::contact_over_whole_step.
+  bool contact_over_whole_step() const { return contact_only() && whole_step(); }
 };
 
 /// The one entry point for rational queries: the exact answer to `params` for a query of any

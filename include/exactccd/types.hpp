@@ -185,6 +185,15 @@ Query from_rows(const std::array<Point, N>& r) {
 struct CcdParams {
   double min_distance = 0.0;  ///< d: finite, >= 0
   double tmax = 1.0;          ///< the time limit: in (0, 1]
+
+  /// True for the contact question: touching counts (d = 0), no separation asked. The one
+  /// place the library asks it (valid parameters have d >= 0, so this is d == 0).
+  constexpr bool contact_only() const { return !(min_distance > 0); }
+  /// True when the whole step is asked (tmax = 1), not a part [0, tmax] of it.
+  constexpr bool whole_step() const { return tmax == 1.0; }
+  /// True for the question of the benchmark files' truth column and of exactccd_ccd without
+  /// parameters: contact over the whole step.
+  constexpr bool contact_over_whole_step() const { return contact_only() && whole_step(); }
 };
 
 /// A certified enclosure [lo, hi] of an exact time in [0, 1]: lo <= t <= hi. The library

@@ -123,7 +123,7 @@ std::optional<TimeInterval> answer_rational_query(const RationalQuery& q, const 
   constexpr bool contact_kind = std::is_same_v<RationalQuery, RationalVertexFaceQuery> ||
                                 std::is_same_v<RationalQuery, RationalEdgeEdgeQuery>;
   if constexpr (contact_kind) {  // the contact question: the contact rule's exact path
-    if (p.min_distance == 0 && p.tmax == 1)
+    if (p.contact_over_whole_step())
       return want_toi ? exact::toi(q) : (exact::ccd(q) ? std::optional(TimeInterval{}) : std::nullopt);
   }
   return separation::exact_toi(q, p);

@@ -26,7 +26,7 @@ using pipeline::Work;
 /// the integer stages count at their own counters, and the exact path takes the contact rule whole.
 template <class Query>
 std::optional<TimeInterval> through_contact_stages(const Query& q, const Question& asked, StageCounters* counters) {
-  Work<Query> work{q, {asked.params, asked.want_toi || asked.params.tmax < 1}, counters};
+  Work<Query> work{q, {asked.params, asked.want_toi || !asked.params.whole_step()}, counters};
   const std::optional<TimeInterval> toi =
       run_stages(work,
                  filter::VolumeExclusionStage{},       // 1. V(t) != 0 on [0, 1] (static error bound)

@@ -94,7 +94,7 @@ struct ContactOfAnyKind {
 /// findings are its list's (contact_question.cpp).
 template <class Query>
 std::optional<TimeInterval> filtered_method(const Query& q, const Question& question, StageCounters* counters) {
-  if (question.params.min_distance == 0) {  // the contact question
+  if (question.params.contact_only()) {
     if constexpr (has_contact_stages<Query>) {
       return contact_question(q, question, counters);
     } else {
@@ -116,8 +116,8 @@ std::optional<TimeInterval> filtered_method(const Query& q, const Question& ques
 template <class Query>
 std::optional<TimeInterval> exact_method(const Query& q, const Question& question) {
   if constexpr (has_contact_stages<Query>) {
-    if (question.params.min_distance == 0) {
-      Work<Query> work{q, {question.params, question.want_toi || question.params.tmax < 1}, nullptr};
+    if (question.params.contact_only()) {
+      Work<Query> work{q, {question.params, question.want_toi || !question.params.whole_step()}, nullptr};
       return pipeline::cut(run_stages(work, exact::ExactContactStage{}), question.params.tmax);
     }
   }

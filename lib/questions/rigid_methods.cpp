@@ -61,7 +61,7 @@ template <class Query>
 std::optional<TimeInterval> filtered(const Query& q, const Question& question, StageCounters* counters) {
   Work<Query> work{q, question, counters};
   rigid::SharedIntervalFrame<Query> frame;
-  if (question.params.min_distance == 0)  // the contact question
+  if (question.params.contact_only())
     return run_stages(work,
                       rigid::RigidUnitScalingStage{},          // lengths and quaternions scaled towards 1
                       rigid::DirectionStage{},                 // a direction keeps them apart over the step

@@ -60,7 +60,7 @@ class ContactWalk {
 
 template <class Query>
 Outcome walk(const Query& q, const IntervalFrame<Query>& frame, double tmax, bool want_toi, bool& used_gmp) {
-  const bool narrow = want_toi || tmax < 1;
+  const bool narrow = want_toi || !CcdParams{0.0, tmax}.whole_step();
   ContactWalk<Query> w(q, frame, used_gmp);
   RootCells cells;  // V's roots, the exact sign of V at an end where its interval is uncertain
   const auto exact_sign_at_end = [&](int end) { return sign_class(w.sign_at(end == 0 ? 0.0 : 1.0)); };

@@ -245,7 +245,7 @@ ReducedDegrees degrees_of(const Query& q, const mpq_class& d_rational) {
 
 template <class Query>
 std::optional<TimeInterval> toi_of(const Query& q, const RationalCcdParams& params) {
-  if (params.min_distance == 0) return contact_toi(q, params.tmax);
+  if (params.contact_only()) return contact_toi(q, params.tmax);
   return separation_toi(q, params);
 }
 

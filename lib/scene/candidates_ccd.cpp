@@ -161,17 +161,17 @@ bool disjoint_swept_boxes(const std::array<int, N>& row, const Vec3* x0, const V
 template <std::size_t F, std::size_t N>
 bool disjoint_boxes(const std::array<int, N>& row, const std::vector<Vec3>& x0, const std::vector<Vec3>& x1,
                     const CcdParams& params) {
-  if (params.tmax == 1 && !(params.min_distance > 0)) return disjoint_swept_boxes<F>(row, x0.data(), x1.data());
+  if (params.contact_over_whole_step()) return disjoint_swept_boxes<F>(row, x0.data(), x1.data());
   scene::Box box[2];
   for (std::size_t s = 0; s < 2; ++s) box[s] = scene::empty_box();
   for (std::size_t i = 0; i < N; ++i) {
     const Vec3 &a = x0[static_cast<std::size_t>(row[i])], &b = x1[static_cast<std::size_t>(row[i])];
-    if (params.tmax == 1)
+    if (params.whole_step())
       scene::add_vertex(box[i < F ? 0 : 1], a, b);
     else
       scene::add_vertex_until(box[i < F ? 0 : 1], a, b, params.tmax);
   }
-  if (params.min_distance > 0)
+  if (!params.contact_only())
     for (scene::Box& b : box) b = scene::inflated(b, params.min_distance);
   return !scene::overlap(box[0], box[1]);
 }
@@ -240,7 +240,7 @@ struct CandidateSetRange {
                  Visit& visit) const {
     const std::array<int, N>* row = rows.data() + (begin - offsets[list]);
     const std::size_t n = x0.size();
-    const bool contact = params.tmax == 1 && !(params.min_distance > 0);
+    const bool contact = params.contact_over_whole_step();
     for (std::size_t k = begin; k < stop; ++k, ++row) {
       if (!valid_sides<F>(*row, n)) return false;
       // Sides sharing a vertex always have overlapping boxes (both hold its position at t =

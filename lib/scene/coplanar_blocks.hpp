@@ -25,7 +25,7 @@ class CoplanarBlocks {
 
   /// Whether the batched stage applies to the question: d = 0 (within d > 0 needs no
   /// coplanarity).
-  static bool applies(const CcdParams& params) { return !(params.min_distance > 0); }
+  static bool applies(const CcdParams& params) { return params.contact_only(); }
 
   /// Adds pair r (identified by id) to its kind's block, or hands it straight to visit(r, id)
   /// when it is of another kind; a full block is decided and its remaining pairs visited.

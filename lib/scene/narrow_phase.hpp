@@ -113,9 +113,9 @@ class PairTests {
   /// add_vertex_until's certified ones; inflated(), which commutes with the hull); false proves
   /// that the pair is not within d anywhere in [0, tmax].
   bool boxes_overlap(const PairSides& r) const {
-    if (params_.tmax < 1) return may_touch_until(r, params_.tmax);
+    if (!params_.whole_step()) return may_touch_until(r, params_.tmax);
     Box a = swept_box_of(r.side[0]), b = swept_box_of(r.side[1]);
-    if (params_.min_distance > 0) {
+    if (!params_.contact_only()) {
       a = inflated(a, params_.min_distance);
       b = inflated(b, params_.min_distance);
     }
@@ -137,7 +137,7 @@ class PairTests {
   /// pairs at d = 0, its four points are never coplanar during [0, h] (a contact needs
   /// coplanarity; within d > 0 it does not, and the other kinds are not four points).
   bool never_coplanar_until(const PairSides& r, double h) const {
-    if (planar || params_.min_distance > 0 ||
+    if (planar || !params_.contact_only() ||
         (r.kind != CollisionKind::vertex_face && r.kind != CollisionKind::edge_edge))
       return false;
     return with_query(r, [&](const auto& q) {

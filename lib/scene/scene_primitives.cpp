@@ -153,7 +153,7 @@ void boxes_of(const std::vector<Point>& x0, const std::vector<Point>& x1, const 
     for (std::size_t v = begin; v < end; ++v) {
       const Vec3 a = lift(x0[v]), b = lift(x1[v]);
       Box box;
-      if (params.tmax == 1.0) {
+      if (params.whole_step()) {
         box.lo = {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
         box.hi = {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
       } else {
@@ -188,7 +188,7 @@ void vertex_boxes(const std::vector<Vec3>& x0, const std::vector<Vec3>& x1, cons
 
 ScenePrimitives scene_topology(const Scene& s, const CcdParams& params) {
   validate(s);
-  return topology(s, params.min_distance > 0);
+  return topology(s, !params.contact_only());
 }
 
 ScenePrimitives scene_topology(const Scene2d& s, const CcdParams&) {

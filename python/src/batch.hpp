@@ -34,7 +34,7 @@ void answer_rows(std::size_t begin, std::size_t end, const double* in, std::size
                  MakeQuery& query, Answer&& answer) {
   using Query = std::decay_t<decltype(query(in))>;
   if constexpr (std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>) {
-    if (!(params.min_distance > 0)) {
+    if (params.contact_only()) {
       const numeric::SimdLevel level = numeric::simd_level();
       filter::VolumeBlock block;
       for (std::size_t first = begin; first < end; first += filter::kVolumeBlock) {

@@ -31,7 +31,7 @@
 #include "io/benchmark_csv.hpp"
 #include "io/obj.hpp"
 #include "methods/methods.hpp"
-#include "fuzz/families.hpp"
+#include "generators/families.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "scene/scene_primitives.hpp"
 #include "tests/fp_environments.hpp"

@@ -10,6 +10,7 @@
 #include "api/checked_query.hpp"
 #include "exactccd/eigen.hpp"
 #include "exactccd/exactccd.h"
+#include "exactccd/rational.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "tests/test_support.hpp"
 
@@ -153,6 +154,30 @@ std::vector<Query> grid(std::uint64_t seed, int n) {
     out.push_back(from_rows<Query>(r));
   }
   return out;
+}
+
+// The question says what it is (CcdParams::contact_only, whole_step): the contact question is
+// d = 0 exactly (-0 too; the least positive double is a minimum-separation question), the
+// whole step is tmax = 1 exactly (the double below 1 is a part of it).
+TEST(CcdParams, SaysWhichQuestionItIs) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double below_one = std::nextafter(1.0, 0.0);
+  EXPECT_TRUE((CcdParams{0.0, 1.0}.contact_only()));
+  EXPECT_TRUE((CcdParams{-0.0, 1.0}.contact_only()));
+  EXPECT_FALSE((CcdParams{tiny, 1.0}.contact_only()));
+  EXPECT_FALSE((CcdParams{1e300, 1.0}.contact_only()));
+  EXPECT_TRUE((CcdParams{0.0, 1.0}.whole_step()));
+  EXPECT_FALSE((CcdParams{0.0, below_one}.whole_step()));
+  EXPECT_FALSE((CcdParams{0.0, tiny}.whole_step()));
+  EXPECT_TRUE(CcdParams{}.contact_over_whole_step());
+  EXPECT_FALSE((CcdParams{tiny, 1.0}.contact_over_whole_step()));
+  EXPECT_FALSE((CcdParams{0.0, below_one}.contact_over_whole_step()));
+  static_assert(CcdParams{}.contact_over_whole_step(), "the default question is contact over the whole step");
+  // The rational question the same way, at values no double reaches.
+  EXPECT_TRUE(RationalCcdParams{}.contact_over_whole_step());
+  EXPECT_FALSE((RationalCcdParams{mpq_class(1, 3), 1}.contact_only()));
+  EXPECT_FALSE((RationalCcdParams{0, mpq_class(2, 3)}.whole_step()));
+  EXPECT_TRUE((RationalCcdParams{0, mpq_class(3, 3)}.whole_step()));
 }
 
 TEST(CApi, QuerySizes) {

@@ -1,6 +1,6 @@
-// The hand-derived degenerate catalogue (fuzz/catalogue.cpp): every method that claims
+// The hand-derived degenerate catalogue (tools/lib/generators/catalogue.cpp): every method that claims
 // exactness, through the rational and the double API, gives the derived answer and TOI.
-#include "fuzz/catalogue.hpp"
+#include "generators/catalogue.hpp"
 
 #include <gtest/gtest.h>
 

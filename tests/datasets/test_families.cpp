@@ -2,7 +2,7 @@
 // unperturbed configuration and the constructed answer and time of impact for every
 // perturbation that stayed exact; the filtered method agrees with the exact path on all of
 // them. (Their wide-exponent placements: test_wide_exponents.cpp.)
-#include "fuzz/families.hpp"
+#include "generators/families.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The fuzzers' property in every build (no clang needed): every committed seed-corpus input,
 // and every query an earlier version answered wrongly (kRegressions), satisfies
 // fuzz/fuzz_check.hpp (filtered == exact, identical TOIs, ...). Plus the input decoder's
-// contract (fuzz/fuzz_input.hpp), which the seeds and fuzz-against rely on.
+// contract (tools/lib/generators/fuzz_input.hpp), which the seeds and fuzz-against rely on.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,10 +12,10 @@
 #include <random>
 #include <vector>
 
-#include "fuzz/catalogue.hpp"
-#include "fuzz/families.hpp"
+#include "generators/catalogue.hpp"
+#include "generators/families.hpp"
 #include "fuzz/fuzz_check.hpp"
-#include "fuzz/fuzz_input.hpp"
+#include "generators/fuzz_input.hpp"
 
 namespace exactccd {
 namespace {

@@ -1,9 +1,9 @@
-// The minimum-separation families (fuzz/separation_families.hpp) produce what they claim, checked
+// The minimum-separation families (tools/lib/generators/separation_families.hpp) produce what they claim, checked
 // independently of the library's separation code: for every family, several questions (d, tmax)
 // and perturbations, the exact squared distance of the placed query (CGAL's rational distances,
 // tests/exact_distance.hpp) at the claimed contact time and at sampled times, and the reference
 // path (Method::exact) at d and at the double just below d.
-#include "fuzz/separation_families.hpp"
+#include "generators/separation_families.hpp"
 
 #include <gtest/gtest.h>
 

@@ -17,9 +17,9 @@
 #include "exactccd/exactccd.h"
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
-#include "fuzz/families.hpp"
+#include "generators/families.hpp"
 #include "kinds/primitive_kinds.hpp"
-#include "fuzz/fuzz_input.hpp"
+#include "generators/fuzz_input.hpp"
 
 namespace exactccd {
 namespace {

@@ -18,8 +18,8 @@
 #include "exact/integer_ops.hpp"
 #include "filter/integer_query.hpp"
 #include "filter/integer_stage.hpp"
-#include "fuzz/catalogue.hpp"
-#include "fuzz/families.hpp"
+#include "generators/catalogue.hpp"
+#include "generators/families.hpp"
 
 namespace exactccd {
 namespace {

@@ -24,7 +24,7 @@
 
 #include "filter/volume_block.hpp"
 #include "filter/volume_exclusion.hpp"
-#include "fuzz/families.hpp"
+#include "generators/families.hpp"
 #include "io/benchmark_csv.hpp"
 
 namespace exactccd {

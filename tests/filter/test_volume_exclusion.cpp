@@ -17,7 +17,7 @@
 #include "questions/contact_question.hpp"
 #include "filter/unit_scaling.hpp"
 #include "filter/volume_exclusion.hpp"
-#include "fuzz/families.hpp"
+#include "generators/families.hpp"
 #include "io/benchmark_csv.hpp"
 
 namespace exactccd {

@@ -1,4 +1,4 @@
-// The degenerate rigid families (fuzz/rigid_families.hpp): every exact method gives the answer
+// The degenerate rigid families (tools/lib/generators/rigid_families.hpp): every exact method gives the answer
 // and the time of impact known by construction, in every exact placement (a common rigid change
 // of frame, power-of-two scale and translation: docs/design.md 9.6), at every perturbation
 // 2^-k towards and away from the degeneracy and at the degeneracy itself.
@@ -9,7 +9,7 @@
 #include <variant>
 
 #include "exactccd/rigid.hpp"
-#include "fuzz/rigid_families.hpp"
+#include "generators/rigid_families.hpp"
 #include "rigid/rigid_layout.hpp"
 
 namespace exactccd {

@@ -13,7 +13,7 @@
 
 #include "exactccd/exactccd.h"
 #include "exactccd/rigid.hpp"
-#include "fuzz/rigid_families.hpp"
+#include "generators/rigid_families.hpp"
 #include "io/rigid_csv.hpp"
 #include "rigid/rigid_layout.hpp"
 #include "tests/fp_environments.hpp"

@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "fuzz/catalogue.hpp"
+#include "generators/catalogue.hpp"
 
 namespace exactccd {
 namespace {

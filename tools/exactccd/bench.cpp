@@ -152,7 +152,7 @@ int bench(const BenchSettings& s) {
     for (const double distance : s.distances) {
       std::vector<CcdParams> params(n);  // each query's question, set before timing
       for (std::size_t i = 0; i < n; ++i) params[i] = {s.relative ? distance * c.box_size(i) : distance, s.tmax};
-      const std::vector<bool> reference = c.reference(params, distance == 0 && s.tmax == 1);
+      const std::vector<bool> reference = c.reference(params, CcdParams{distance, s.tmax}.contact_over_whole_step());
       table.add(c, distance, reference, time_arms(c.arms(params), n, s.repetitions));
     }
   }

@@ -231,7 +231,7 @@ std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Me
     using Kind = decltype(kind);
     using RationalQuery = typename Kind::template Query<mpq_class>;
     using DoubleQuery = typename Kind::template Query<double>;
-    const bool contact_question = params.min_distance == 0 && params.tmax == 1;
+    const bool contact_question = params.contact_over_whole_step();
     const auto& exact_rows = d.doubles[i];
     if (!exact_rows && tools::is_exact_method(method)) {  // not doubles: the rational exact path
       if (counters) ++counters->exact;
@@ -261,7 +261,7 @@ void require_method_answers(tools::Method method, QueryKind kind, const CcdParam
   if (!is_contact_kind_at(kind))
     throw UsageError("the baseline method " + method_name(method) + " answers only vf and ee queries, not " +
                      kind_name(kind) + " (use filtered or exact)");
-  if (params.min_distance != 0 || params.tmax != 1)
+  if (!params.contact_over_whole_step())
     throw UsageError("the baseline method " + method_name(method) +
                      " answers only the contact question (no --min-distance, --tmax 1)");
 }
@@ -380,7 +380,7 @@ void append_json_record(std::string& items, const CheckRecord& rec) {
 
 namespace {
 /// Whether the report answers the default question (contact over [0, 1]).
-bool default_question(const CcdParams& params) { return params.min_distance == 0 && params.tmax == 1; }
+bool default_question(const CcdParams& params) { return params.contact_over_whole_step(); }
 }  // namespace
 
 void print_check_header(const CcdParams& params) {

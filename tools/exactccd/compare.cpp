@@ -91,7 +91,7 @@ CompareTally tally_queries(const Dataset& d, const std::vector<TheirAnswer>& the
       const std::optional<TimeInterval> toi_i = toi(q, exact_params);
       std::vector<std::string> categories;
       if constexpr (is_contact_kind<Kind>)
-        if (they_collide != toi_i.has_value() && (params.min_distance == 0 && params.tmax == 1))
+        if (they_collide != toi_i.has_value() && params.contact_over_whole_step())
           categories = exact::degeneracy_categories(q);
       return std::pair(toi_i, categories);
     });

@@ -41,8 +41,8 @@ Query i of the run is
                the scale of d, with degenerate edits) and for vf and ee the fuzzers' decoder on
                random bytes (integer grids, random doubles, family instances, catalogue cases).
 The families: for --min-distance 0 with vf and ee the degenerate contact families
-(fuzz/families.hpp: perturbations of 2^-k of contact through a vertex, an edge, coplanar
-sliding, ...); otherwise the minimum-separation families (fuzz/separation_families.hpp): for
+(tools/lib/generators/families.hpp: perturbations of 2^-k of contact through a vertex, an edge, coplanar
+sliding, ...); otherwise the minimum-separation families (tools/lib/generators/separation_families.hpp): for
 each feature pair (point-triangle, point-edge, point-point, edge-edge crossing, parallel, end to
 end; the plane's kinds too) a configuration whose exact minimum distance over [0, tmax] is d
 itself, passing, approaching, leaving or sliding at d, its contact at tmax, inside or at 0, and

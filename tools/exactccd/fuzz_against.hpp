@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "fuzz/families.hpp"
-#include "fuzz/separation_families.hpp"
+#include "generators/families.hpp"
+#include "generators/separation_families.hpp"
 #include "io/benchmark_csv.hpp"
 
 namespace exactccd::cli::fuzz {
@@ -47,7 +47,7 @@ struct FuzzKind {
   std::vector<const families::Family*> contact_families;
   families::Instance (*random_contact_instance)(std::mt19937_64&) = nullptr;
   Rows (*decode)(const std::uint8_t*, std::size_t) = nullptr;
-  /// The minimum-separation families of the kind (fuzz/separation_families.hpp).
+  /// The minimum-separation families of the kind (tools/lib/generators/separation_families.hpp).
   std::vector<const separation_families::Family*> separation_families;
 
   /// Coordinates per query: 2 * points * dimension.
@@ -72,7 +72,7 @@ struct FuzzRun {
 
   /// The contact question of the benchmark (d = 0, tmax = 1): what the contact-only entry
   /// points answer.
-  bool contact_question() const { return params.min_distance == 0 && params.tmax == 1; }
+  bool contact_question() const { return params.contact_over_whole_step(); }
 };
 
 /// The random generator of query i of a run for one of its uses (tag): a run is reproducible

@@ -3,7 +3,7 @@
 
 #include "degeneracy/degeneracy.hpp"
 #include "exactccd/plugin.h"
-#include "fuzz/fuzz_input.hpp"
+#include "generators/fuzz_input.hpp"
 #include "fuzz_against.hpp"
 
 namespace exactccd::cli::fuzz {

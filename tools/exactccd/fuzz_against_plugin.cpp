@@ -36,7 +36,7 @@ Plugin::Plugin(const std::string& path, const FuzzKind& kind, const CcdParams& p
     const char* why = dlerror();
     throw UsageError("fuzz-against: cannot load plug-in '" + path + "': " + (why ? why : "unknown error"));
   }
-  const bool contact_only_ok = !kind.answer_symbol.empty() && params.min_distance == 0 && params.tmax == 1;
+  const bool contact_only_ok = !kind.answer_symbol.empty() && params.contact_over_whole_step();
   if (void* f = find(kind.query_symbol)) {
     entry_ = Entry::query;
     symbol_ = kind.query_symbol;

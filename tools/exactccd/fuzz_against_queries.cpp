@@ -261,7 +261,7 @@ std::vector<std::string> Groups::names() const {
 
 Groups make_groups(const FuzzKind& kind, const CcdParams& params) {
   Groups g;
-  const bool contact = params.min_distance == 0 && !kind.contact_families.empty();
+  const bool contact = params.contact_only() && !kind.contact_families.empty();
   if (contact)
     for (const families::Family* f : kind.contact_families) g.list.push_back({f->name, Source::contact_family, f});
   else

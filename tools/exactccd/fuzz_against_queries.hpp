@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "fuzz/fuzz_input.hpp"
+#include "generators/fuzz_input.hpp"
 #include "fuzz_against.hpp"
 #include "fuzz_against_plugin.hpp"
 #include "fuzz_against_report.hpp"
@@ -15,8 +15,8 @@ namespace exactccd::cli::fuzz {
 
 /// Where the queries of a group come from.
 enum class Source {
-  contact_family,              ///< a degenerate family of fuzz/families.hpp (d = 0 sweep)
-  separation_family,           ///< a minimum-separation family (fuzz/separation_families.hpp)
+  contact_family,              ///< a degenerate family of tools/lib/generators/families.hpp (d = 0 sweep)
+  separation_family,           ///< a minimum-separation family (tools/lib/generators/separation_families.hpp)
   random_contact_instance,     ///< families::random_instance
   random_separation_instance,  ///< separation_families::random_instance
   decoder,                     ///< the fuzzers' decoder on random bytes, one of its modes

@@ -12,8 +12,8 @@
 #include <utility>
 #include <variant>
 
-#include "fuzz/catalogue.hpp"
-#include "fuzz/families.hpp"
+#include "generators/catalogue.hpp"
+#include "generators/families.hpp"
 #include "query_sets.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "subcommands.hpp"
@@ -133,7 +133,7 @@ void write_json(std::ostream& out, const std::vector<Row>& rows) {
         << (r.relative ? "true" : "false") << ", \"tmax\": " << r.tmax << ", \"queries\": " << r.queries << ", \"mean_ns\": " << r.mean_ns
         << ", \"median_ns\": " << r.median_ns << ", \"fp\": " << r.fp << ", \"fn\": " << r.fn
         << ", \"fp_fn_against\": \""
-        << (r.min_distance == 0 && r.tmax == 1 ? "file truth column" : "Method::exact at the same d and tmax")
+        << (CcdParams{r.min_distance, r.tmax}.contact_over_whole_step() ? "file truth column" : "Method::exact at the same d and tmax")
         << "\", \"truth_disagrees_with_exact\": "
         << r.truth_disagrees_with_exact
         << ", \"exact_fallbacks\": " << r.exact_fallbacks << ", \"stages\": {\"volume_exclusion\": "

@@ -12,7 +12,7 @@
 
 #include "exactccd/ccd.hpp"
 #include "exactccd/rigid.hpp"
-#include "fuzz/rigid_families.hpp"
+#include "generators/rigid_families.hpp"
 #include "io/input_file.hpp"
 #include "output_file.hpp"
 #include "query_sets.hpp"
@@ -234,7 +234,7 @@ void write_families(const ParsedOptions& options) {
       for (const bool toward : {true, false}) {
         if (k < 0 && !toward) continue;
         const rigid_families::Instance inst = rigid_families::make(f, k, toward, rng);
-        if (inst.min_distance != 0) continue;
+        if (!CcdParams{inst.min_distance, 1.0}.contact_only()) continue;  // contact families only
         const bool exact = std::visit([](const auto& q) { return ccd(q, CcdParams{}, Method::exact); }, inst.query);
         if (inst.expected && *inst.expected != exact)
           throw std::runtime_error("generate families --motion rigid: " + f.name + " k=" + std::to_string(k) +
@@ -242,7 +242,7 @@ void write_families(const ParsedOptions& options) {
         std::visit([&](const auto& q) { append(families_of[f.vertex_face ? 0 : 1], q, exact); }, inst.query);
       }
   const std::vector<std::string> note{
-      "Degenerate rigid families (fuzz/rigid_families.hpp) at k = unperturbed, 0, 4, ..., 52, both directions,",
+      "Degenerate rigid families (tools/lib/generators/rigid_families.hpp) at k = unperturbed, 0, 4, ..., 52, both directions,",
       "placed by exact common changes of frame; truth by construction, checked against Method::exact.",
       "Regenerate: exactccd generate families --motion rigid --seed " + std::to_string(seed) + " --out DIR"};
   write_rigid_file(fs::path(out) / "rigid-families-vertex-face.csv", families_of[0], note);

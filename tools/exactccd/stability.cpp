@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "fuzz/families.hpp"
+#include "generators/families.hpp"
 #include "output_file.hpp"
 #include "subcommands.hpp"
 
@@ -26,7 +26,7 @@ const CommandSpec& command() {
     c.name = "stability";
     c.usage = "usage: exactccd stability [options]";
     c.description =
-        "Sweeps every degenerate family (fuzz/families.hpp: a degenerate configuration perturbed by\n"
+        "Sweeps every degenerate family (tools/lib/generators/families.hpp: a degenerate configuration perturbed by\n"
         "2^-k times the scene scale, towards or away from contact) over k = K_MIN..K_MAX, plus the\n"
         "unperturbed configuration (k written as -1), and writes for every method the false-positive\n"
         "and false-negative counts and rates against the exact answer, as CSV (the answer known by\n"
@@ -68,7 +68,7 @@ std::vector<std::string> split(const std::string& list) {
 
 /// The answer of a method to the question (the contact question when params are the defaults).
 bool answer(const families::AnyQuery& q, tools::Method m, const CcdParams& params) {
-  if (params.min_distance == 0 && params.tmax == 1)
+  if (params.contact_over_whole_step())
     return std::visit([m](const auto& x) { return tools::ccd(x, m); }, q);
   const Method exact_method = m == tools::Method::exact ? Method::exact : Method::filtered;
   return std::visit([&](const auto& x) { return ccd(x, params, exact_method); }, q);
@@ -117,7 +117,7 @@ struct Sweep {
   int instances = 0;
   std::uint64_t seed = 0;
   CcdParams params;
-  bool contact_question() const { return params.min_distance == 0 && params.tmax == 1; }
+  bool contact_question() const { return params.contact_over_whole_step(); }
 };
 
 /// The counts of task t: each instance seeded from (seed, t, i), alternating directions.

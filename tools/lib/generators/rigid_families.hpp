@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "exactccd/rigid.hpp"
-#include "families.hpp"  // KnownToi, is_tightest_enclosure
+#include "generators/families.hpp"  // KnownToi, is_tightest_enclosure
 
 namespace exactccd::rigid_families {
 

@@ -3,7 +3,7 @@
 // (1 - s^2 t^2) / (1 + s^2 t^2), sin theta = 2 s t / (1 + s^2 t^2); a direction (cos phi, sin phi)
 // is reached at s t = tan(phi / 2) = sin phi / (1 + cos phi): (3, 4) / 5 at s t = 1/2, (7, 24) / 25
 // at s t = 3/4, the y axis at s t = 1. eps = 2^-k. Each family's derivation is at its maker.
-#include "rigid_families.hpp"
+#include "generators/rigid_families.hpp"
 
 #include <array>
 #include <cmath>

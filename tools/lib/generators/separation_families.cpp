@@ -1,5 +1,5 @@
 // The minimum-separation families (separation_families.hpp: the construction and its claims).
-#include "fuzz/separation_families.hpp"
+#include "generators/separation_families.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -154,11 +154,11 @@ Targets targets(const Construction& c, const Draw& draw, const CcdParams& p, int
   // tmax: the perturbations of `approach` start from a contact at tmax.
   if (c.motion == Motion::approach) t.contact = p.tmax;
   // At d = 0 an approaching gap can only reach 0 at t = 1 (it must not go below): nothing to move.
-  const bool can_move_time = c.motion == Motion::pass || (c.motion == Motion::approach && p.min_distance > 0);
-  const bool time = can_move_time && (draw.perturb_time || (p.min_distance == 0 && toward));
+  const bool can_move_time = c.motion == Motion::pass || (c.motion == Motion::approach && !p.contact_only());
+  const bool time = can_move_time && (draw.perturb_time || (p.contact_only() && toward));
   if (time) {
     t.contact = perturbed(p.tmax, k, toward ? -1 : 1);  // toward: before tmax
-  } else if (p.min_distance > 0) {
+  } else if (!p.contact_only()) {
     t.gap = perturbed(p.min_distance, k, toward ? -1 : 1);  // toward: closer than d
   } else if (!toward) {
     t.gap = std::ldexp(1.0, draw.scale - k);
@@ -330,7 +330,7 @@ Instance random_instance(const std::vector<const Family*>& pool, const CcdParams
 Rows random_near(int points, int dimension, const CcdParams& params, std::mt19937_64& rng) {
   std::uniform_int_distribution<int> grid(-4, 4), spread(-3, 3), coin(0, 1), edit(0, 2);
   std::uniform_int_distribution<int> point(0, points - 1), axis(0, dimension - 1);
-  const int base = params.min_distance > 0 ? std::ilogb(params.min_distance) : 0;
+  const int base = !params.contact_only() ? std::ilogb(params.min_distance) : 0;
   const int e = std::clamp(base + spread(rng), -1074, 1000);
   Rows r{};
   for (int i = 0; i < 2 * points; ++i) {

@@ -5,7 +5,7 @@
 // flips), a power-of-two scale and an integer offset place it randomly; the answer is kept
 // only if every coordinate stayed exact (checked with TwoSum). make_wide() places it by
 // per-axis scales over the whole double range instead (see the comment above it).
-#include "fuzz/families.hpp"
+#include "generators/families.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 // The hand-derived degenerate catalogue. Each case states its motion, where the volume V(t)
 // vanishes and why the primitives do or do not touch there. Coordinates are written as
 // doubles that are exact binary fractions (0.25, 0x1p-52, ...), converted exactly to mpq_class.
-#include "fuzz/catalogue.hpp"
+#include "generators/catalogue.hpp"
 
 #include <cmath>
 #include <functional>

@@ -8,12 +8,12 @@
 //   grid       1 byte scale exponent (a table: 0, -1, ..., -1070 subnormal, 996 ~ 1e300, ...),
 //              24 bytes: each coordinate an integer in [-8, 8] times 2^scale.
 //   raw        24 doubles, 8 bytes each (little-endian bit patterns; non-finite ones read as 0).
-//   family     1 byte family (of the requested kind, fuzz/families.hpp), 1 byte k (-1..62, or
+//   family     1 byte family (of the requested kind, tools/lib/generators/families.hpp), 1 byte k (-1..62, or
 //              62..1070 in steps of 16: subnormal perturbations), 1 byte direction and
 //              placement (bit 0: toward; (byte >> 1) % 5: 0 the family's own placement, 1..4
 //              families::make_wide with WideStyle 0..3: per-axis scales over the whole double
 //              range), 8 bytes placement seed.
-//   catalogue  2 bytes: an entry of fuzz/catalogue.hpp of the requested kind (with the 2^996,
+//   catalogue  2 bytes: an entry of tools/lib/generators/catalogue.hpp of the requested kind (with the 2^996,
 //              2^-1060, 2^20 and 2^40 copies).
 // Edits (op % 15): copy a point onto another (shared and repeated vertices), make a vertex
 // static, flatten an axis (coplanar), nudge a coordinate by a few ulps, midpoint and
@@ -34,8 +34,8 @@
 #include <vector>
 
 #include "exactccd/types.hpp"
-#include "fuzz/catalogue.hpp"
-#include "fuzz/families.hpp"
+#include "generators/catalogue.hpp"
+#include "generators/families.hpp"
 
 namespace exactccd::fuzzing {
 

@@ -1,5 +1,5 @@
 // Fuzzer bytes -> queries biased to degeneracies; the format is in fuzz_input.hpp.
-#include "fuzz/fuzz_input.hpp"
+#include "generators/fuzz_input.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <limits>
 #include <sstream>
 
-#include "fuzz/catalogue.hpp"
-#include "fuzz/families.hpp"
+#include "generators/catalogue.hpp"
+#include "generators/families.hpp"
 #include "io/benchmark_csv.hpp"
 
 namespace exactccd::fuzzing {
