@@ -177,7 +177,7 @@ TEST(CcdParams, SaysWhichQuestionItIs) {
   EXPECT_TRUE(RationalCcdParams{}.contact_over_whole_step());
   EXPECT_FALSE((RationalCcdParams{mpq_class(1, 3), 1}.contact_only()));
   EXPECT_FALSE((RationalCcdParams{0, mpq_class(2, 3)}.whole_step()));
-  EXPECT_TRUE((RationalCcdParams{0, mpq_class(3, 3)}.whole_step()));
+  EXPECT_TRUE((RationalCcdParams{0, mpq_class(2, 3) + mpq_class(1, 3)}.whole_step()));
 }
 
 TEST(CApi, QuerySizes) {
