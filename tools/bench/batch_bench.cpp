@@ -12,7 +12,9 @@
 // at d = 0 and d = 1e-3 (absolute; the naive cubic answers the contact question only, so its
 // loop is the same at both d: the ratio is the cost of the exact answer against the cubic's).
 //
-//   build/batch_bench [--rounds N] [--only WORKLOAD] [--distance D] [--data DIR] [--funnel DIR]
+//   build/batch_bench [--rounds N] [--only WORKLOAD] [--distance D] [--data-dir DIR] [--funnel DIR]
+// (the data folder: --data-dir, else EXACTCCD_DATA_DIR, else the build tree's share/exactccd/data,
+// as for the exactccd program)
 // prints one row per workload and d: queries, colliding share, the median ns per query of each
 // method and the ratios find_collisions / naive and earliest_toi / naive.
 #include <algorithm>
@@ -27,6 +29,8 @@
 #include <vector>
 
 #include "baseline/naive_ccd.hpp"
+#include "cli_common.hpp"
+#include "data_dir.hpp"
 #include "exactccd/exactccd.hpp"
 #include "io/benchmark_csv.hpp"
 #include "scene/scene_primitives.hpp"
@@ -161,22 +165,30 @@ void measure(const Workload& w, double d, int rounds) {
 
 int main(int argc, char** argv) {
   int rounds = 7;
-  fs::path data = EXACTCCD_DATA_DIR, funnel = EXACTCCD_SCALABLE_SAMPLE_DIR;
+  std::string data;  // empty: found like the exactccd program's (tools/exactccd/data_dir.hpp)
+  fs::path funnel = EXACTCCD_SCALABLE_SAMPLE_DIR;
   std::string only;
   std::vector<double> distances{0.0, 1e-3};
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--rounds")) rounds = std::max(1, std::atoi(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--only")) only = argv[i + 1];
     else if (!std::strcmp(argv[i], "--distance")) distances = {std::atof(argv[i + 1])};
-    else if (!std::strcmp(argv[i], "--data")) data = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--data-dir") || !std::strcmp(argv[i], "--data")) data = argv[i + 1];
     else if (!std::strcmp(argv[i], "--funnel")) funnel = argv[i + 1];
     else {
-      std::fprintf(stderr, "usage: batch_bench [--rounds N] [--only WORKLOAD] [--distance D] [--data DIR] [--funnel DIR]\n");
+      std::fprintf(stderr, "usage: batch_bench [--rounds N] [--only WORKLOAD] [--distance D] [--data-dir DIR] [--funnel DIR]\n");
       return 2;
     }
   }
+  fs::path data_dir;
+  try {
+    data_dir = exactccd::cli::bundled_data_dir(data, "batch_bench");
+  } catch (const exactccd::cli::UsageError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
   std::vector<Workload> workloads;
-  workloads.push_back(sim_workload(data));
+  workloads.push_back(sim_workload(data_dir));
   workloads.push_back(scene_workload("cloth", 64));
   workloads.push_back(scene_workload("fold", 64));
   if (auto f = funnel_workload(funnel))

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "data_dir.hpp"
 #include "motions.hpp"
 #include "subcommands.hpp"
 
@@ -17,39 +18,47 @@ namespace {
 /// The most repetitions: a bound on the run time, not on anything's size.
 constexpr long long kMaxRepetitions = 100000;
 
+/// What bench does (its --help).
+constexpr const char* kDescription =
+    "Runs every method on the same loaded queries and reports, per dataset and method: mean and\n"
+    "median time per query in ns, false positives and false negatives against the file's published\n"
+    "truth column (for every method, the exact ones included), the queries that reached the exact\n"
+    "CGAL fallback, and the share decided by each filter stage. Per dataset, truth!=exact counts the\n"
+    "queries whose published truth disagrees with the exact reference (Method::exact); when it is\n"
+    "not 0 the FP/FN figures are against a wrong truth, and a note says so on stderr.\n"
+    "\n"
+    "Without files it runs the bundled datasets: the shared benchmark's unit-tests (when present)\n"
+    "and the simulation-like sets under data/sim (dataset names starting with \"sim\").\n"
+    "Each file given is one dataset.\n"
+    "\n"
+    "The bundled data folder: --data-dir DIR, else the environment variable EXACTCCD_DATA_DIR,\n"
+    "else share/exactccd/data relative to the program (<prefix>/bin/../share/exactccd/data when\n"
+    "installed; in a build tree a link to the checkout's data/). The shared benchmark sample (not\n"
+    "installed): EXACTCCD_SAMPLE_QUERIES_DIR, else share/exactccd/sample-queries beside data/.\n"
+    "\n"
+    "Timing: each repetition times the whole dataset for each method in turn (methods interleaved\n"
+    "within a repetition, so drift affects them alike); time per query = elapsed / queries.\n"
+    "mean_ns and median_ns are the mean and median of that figure over the repetitions.\n"
+    "\n"
+    "Minimum separation: --min-distances D1,D2,... runs every method at each d (with --relative,\n"
+    "d is that fraction of each query's bounding-box size: the largest extent of its points at\n"
+    "t0 and t1); FP and FN at d > 0 or tmax < 1 are against Method::exact at the same question\n"
+    "(the file's truth column is the contact question's). Only filtered and exact answer them.\n"
+    "gmp_cgal: queries of the filtered method decided with GMP integers or CGAL (integer + exact).\n"
+    "\n"
+    "--motion rigid: the rigid filtered method on rigid query files (default: data/rigid) against the\n"
+    "linear filtered method on the same bodies' linearised queries (every vertex's positions at t0\n"
+    "and t1 as a linear query), per file and d: mean and median ns per query of each, the ratio of\n"
+    "the means, FP/FN of the rigid method (against the truth column at d = 0 and tmax = 1, else\n"
+    "against the rigid Method::exact; with --methods containing exact, always against it),\n"
+    "gmp_cgal and the stages of the first repetition.\n";
+
 const CommandSpec& command() {
   static const CommandSpec spec = [] {
     CommandSpec c;
     c.name = "bench";
     c.usage = "usage: exactccd bench [options] [FILE.csv...]";
-    c.description =
-        "Runs every method on the same loaded queries and reports, per dataset and method: mean and\n"
-        "median time per query in ns, false positives and false negatives against the file's published\n"
-        "truth column (for every method, the exact ones included), the queries that reached the exact\n"
-        "CGAL fallback, and the share decided by each filter stage. Per dataset, truth!=exact counts the\n"
-        "queries whose published truth disagrees with the exact reference (Method::exact); when it is\n"
-        "not 0 the FP/FN figures are against a wrong truth, and a note says so on stderr.\n"
-        "\n"
-        "Without files it runs the bundled datasets: the shared benchmark's unit-tests (when present)\n"
-        "and the simulation-like sets under data/sim (dataset names starting with \"sim\").\n"
-        "Each file given is one dataset.\n"
-        "\n"
-        "Timing: each repetition times the whole dataset for each method in turn (methods interleaved\n"
-        "within a repetition, so drift affects them alike); time per query = elapsed / queries.\n"
-        "mean_ns and median_ns are the mean and median of that figure over the repetitions.\n"
-        "\n"
-        "Minimum separation: --min-distances D1,D2,... runs every method at each d (with --relative,\n"
-        "d is that fraction of each query's bounding-box size: the largest extent of its points at\n"
-        "t0 and t1); FP and FN at d > 0 or tmax < 1 are against Method::exact at the same question\n"
-        "(the file's truth column is the contact question's). Only filtered and exact answer them.\n"
-        "gmp_cgal: queries of the filtered method decided with GMP integers or CGAL (integer + exact).\n"
-        "\n"
-        "--motion rigid: the rigid filtered method on rigid query files (default: data/rigid) against the\n"
-        "linear filtered method on the same bodies' linearised queries (every vertex's positions at t0\n"
-        "and t1 as a linear query), per file and d: mean and median ns per query of each, the ratio of\n"
-        "the means, FP/FN of the rigid method (against the truth column at d = 0 and tmax = 1, else\n"
-        "against the rigid Method::exact; with --methods containing exact, always against it),\n"
-        "gmp_cgal and the stages of the first repetition.\n";
+    c.description = kDescription;
     c.options = {
         kind_option("query kind of the files (default: inferred from the path)"),
         motion_option("linear: benchmark CSV files, every method of --methods; rigid: rigid\n"
@@ -62,6 +71,9 @@ const CommandSpec& command() {
         flag_option("--relative", "each d of --min-distances is a fraction of the query's box size"),
         real_option("--tmax", "T", std::numeric_limits<double>::denorm_min(), 1.0, "1",
                     "only times t in [0, T] count (the nearest double to T)"),
+        text_option("--data-dir", "DIR", "",
+                    "the bundled data folder, for a run without files (default: the environment\n"
+                    "variable EXACTCCD_DATA_DIR, else found relative to the program)"),
         text_option("--json", "FILE", "",
                     "also write the results as a JSON array ('-' for stdout; the table then\n"
                     "goes to stderr): per (dataset, method) the table's figures,\n"
@@ -101,6 +113,7 @@ BenchSettings bench_settings(const ParsedOptions& options) {
   s.relative = options.flag("--relative");
   s.tmax = options.real("--tmax");
   s.files = options.positionals();
+  s.data_dir = options.has("--data-dir") ? options.text("--data-dir") : "";
   return s;
 }
 
@@ -108,9 +121,11 @@ BenchSettings bench_settings(const ParsedOptions& options) {
 /// every d) before anything is printed.
 template <class Motion>
 std::vector<typename Motion::Dataset> load_files(const BenchSettings& s) {
-  const std::vector<std::string> files = s.files.empty() ? Motion::bundled_files() : s.files;
+  const std::string name = subcommand_name<Motion>("bench");
+  const std::vector<std::string> files =
+      s.files.empty() ? Motion::bundled_files(bundled_data_dir(s.data_dir, name)) : s.files;
   if (files.empty())
-    throw UsageError(subcommand_name<Motion>("bench") + ": no dataset given and no bundled dataset found");
+    throw UsageError(name + ": no dataset given and no bundled dataset found");
   std::vector<typename Motion::Dataset> datasets;
   for (const std::string& f : files) {
     datasets.push_back(Motion::load(f, s.kind, {}));

@@ -12,6 +12,7 @@
 #include <utility>
 #include <variant>
 
+#include "data_dir.hpp"
 #include "generators/catalogue.hpp"
 #include "generators/families.hpp"
 #include "query_sets.hpp"
@@ -63,13 +64,15 @@ void LinearMotion::require_answers(const Dataset& d, tools::Method method, const
   require_double_range(d, method);
 }
 
-std::vector<std::string> LinearMotion::bundled_files() {
+std::vector<std::string> LinearMotion::bundled_files(const fs::path& data) {
   std::vector<std::string> files;
-  const fs::path sample = fs::path(EXACTCCD_SAMPLE_QUERIES_DIR) / "unit-tests";
-  for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
-                        "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"})
-    if (fs::exists(sample / f)) files.push_back((sample / f).string());
-  const fs::path sim = fs::path(EXACTCCD_DATA_DIR) / "sim";
+  if (const std::optional<fs::path> sample_dir = shared_sample_dir()) {
+    const fs::path sample = *sample_dir / "unit-tests";
+    for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
+                          "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"})
+      if (fs::exists(sample / f)) files.push_back((sample / f).string());
+  }
+  const fs::path sim = data / "sim";
   if (fs::is_directory(sim)) {
     std::vector<std::string> sims;
     for (const auto& e : fs::directory_iterator(sim))

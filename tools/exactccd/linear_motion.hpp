@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,8 +42,9 @@ struct LinearMotion {
   /// Every stage of the linear filtered method.
   static StageCounts stage_counts(const StageCounters& s) { return linear_stage_counts(s); }
 
-  /// The shared benchmark's unit-tests (when present), then data/sim.
-  static std::vector<std::string> bundled_files();
+  /// The shared benchmark's unit-tests (when present: shared_sample_dir, data_dir.hpp), then
+  /// the bundled data's sim/ (`data`: bundled_data_dir).
+  static std::vector<std::string> bundled_files(const std::filesystem::path& data);
   class BenchCase;
   class BenchTable;
 

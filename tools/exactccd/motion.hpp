@@ -19,7 +19,8 @@
 //                                            // query i through the library's public entry point
 //   static const char* const record_motion;  // check --json's "motion" value (nullptr: no key)
 //   static StageCounts stage_counts(const StageCounters&);  // the stages a report prints
-//   static std::vector<std::string> bundled_files();  // bench without files
+//   static std::vector<std::string> bundled_files(const std::filesystem::path& data);
+//                                            // bench without files (data: data_dir.hpp)
 //   class BenchCase;   // one dataset in bench: BenchCase(const Dataset&, const BenchSettings&),
 //                      //   box_size(i), reference(params, contact_question), arms(params)
 //   class BenchTable;  // bench's report: BenchTable(const BenchSettings&) (checks the options
@@ -46,6 +47,7 @@ struct BenchSettings {
   bool relative = false;               ///< --relative
   double tmax = 1;                     ///< --tmax
   std::vector<std::string> files;      ///< the files given (empty: the model's bundled files)
+  std::string data_dir;                ///< --data-dir ("": the environment, else beside the program)
 };
 
 /// One timed arm of a benchmark: answers every query of a dataset into `answers` (sized to the

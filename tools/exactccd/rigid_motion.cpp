@@ -79,9 +79,9 @@ StageCounts RigidMotion::stage_counts(const StageCounters& s) {
           {"exact", s.exact}};
 }
 
-std::vector<std::string> RigidMotion::bundled_files() {
+std::vector<std::string> RigidMotion::bundled_files(const fs::path& data) {
   std::vector<std::string> files;
-  const fs::path dir = fs::path(EXACTCCD_DATA_DIR) / "rigid";
+  const fs::path dir = data / "rigid";
   if (fs::is_directory(dir))
     for (const auto& e : fs::directory_iterator(dir))
       if (e.path().extension() == ".csv") files.push_back(e.path().string());

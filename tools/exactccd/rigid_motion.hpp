@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,8 +47,8 @@ struct RigidMotion {
   /// The stages of the rigid filtered method.
   static StageCounts stage_counts(const StageCounters& s);
 
-  /// data/rigid.
-  static std::vector<std::string> bundled_files();
+  /// The bundled data's rigid/ (`data`: bundled_data_dir, data_dir.hpp).
+  static std::vector<std::string> bundled_files(const std::filesystem::path& data);
   class BenchCase;
   class BenchTable;
 
