@@ -63,9 +63,10 @@ if(NOT kept EQUAL 120 OR NOT EXISTS ${WORK}/kept/files.tsv)
   message(FATAL_ERROR "one answer changed: ${kept} outputs kept in OUT_DIR, not 120 and files.tsv\n${out}")
 endif()
 
-# An internal error (exit 1) on one file: a run that failed, exit 2.
+# An internal error (exit 1) on one file: a run that failed, exit 2 (the outputs kept in WORK,
+# not in a temporary folder).
 wrapper(internal_error "*small-vertex-face.csv" "echo 'exactccd: internal error: test' >&2; exit 1")
-run(--no-default-roots --root ${small} ${EXE} ${WORK}/internal_error)
+run(--no-default-roots --root ${small} ${EXE} ${WORK}/internal_error ${WORK}/failed)
 expect(2 "FAILED TO RUN tests/data/small-vertex-face.csv, d = 0, tmax = 1: exit status old 0, new 1" "internal error")
 
 # Usage errors: no program, a missing program, an unknown option.
