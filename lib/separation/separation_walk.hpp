@@ -25,7 +25,8 @@
 //  5. if the walk is undecided and every point lies in one plane, walks again without the
 //     point-triangle and edge-edge terms (separation_walk.cpp, planar_walk).
 // Anything else (a sign that intervals cannot certify: tangent passes, a root that is a double,
-// two terms meeting at t*) is left undecided, and the exact path answers.
+// two terms meeting at t*), or a walk past its cell budget (kMaxCells in separation_walk.cpp), is
+// left undecided, and the exact path answers.
 #pragma once
 
 #include "exactccd/types.hpp"
