@@ -15,6 +15,7 @@
 // for its duration and restores the caller's on return, also when it throws.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <type_traits>
 
@@ -45,6 +46,18 @@ namespace exactccd {
 template <class Query>
 std::optional<TimeInterval> answer_query(const Query& q, const CcdParams& params, Method method, bool want_toi,
                                          StageCounters* counters);
+
+/// The answers to one question for `count` queries of one kind (the double query types of
+/// types.hpp): answers[i] is what answer_query(queries[i], params, method, want_toi, counters)
+/// returns, for every i < count, counted in `counters` (may be null). The filtered method runs
+/// each question's stage list on blocks of queries (its stages with a block form in vector
+/// lanes: docs/architecture.md, "The block protocol"); the answers are the same. Checks the
+/// parameters and every query before answering any: throws std::invalid_argument as
+/// answer_query does, naming the first bad query's index. Installs the default floating-point
+/// environment for the call.
+template <class Query>
+void answer_batch(const Query* queries, std::size_t count, const CcdParams& params, Method method, bool want_toi,
+                  std::optional<TimeInterval>* answers, StageCounters* counters = nullptr);
 
 /// True for the query types with double coordinates (the kinds of types.hpp).
 template <class Query>

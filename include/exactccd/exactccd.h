@@ -66,6 +66,15 @@ exactccd_status exactccd_ccd(int kind, const double* query, double min_distance,
 exactccd_status exactccd_toi(int kind, const double* query, double min_distance, double tmax, int* collides,
                              double* lo, double* hi);
 
+/* Many queries of one kind with one question: `queries` holds `count` queries of
+ * exactccd_query_size(kind) doubles each, one after the other. For every i < count, collides[i]
+ * is what exactccd_ccd gives query i and, when lo and hi are not NULL, a collision's earliest
+ * time lies in [lo[i], hi[i]] as exactccd_toi gives it (lo and hi are both NULL or both not).
+ * The filtered method runs its stage lists on blocks of queries (the same answers). Every query
+ * is checked first: on an error nothing is written. `queries` may be NULL when count is 0. */
+exactccd_status exactccd_toi_batch(int kind, const double* queries, size_t count, double min_distance, double tmax,
+                                   int* collides, double* lo, double* hi);
+
 /** Candidate pairs from the caller's own broad phase (exactccd/candidates.hpp): row-major arrays
  * of vertex indices into the positions, `*_count` rows each; a list may be NULL when its count
  * is 0. A candidate whose two sides share a vertex index, or whose triangle or edge repeats one,

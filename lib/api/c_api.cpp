@@ -4,11 +4,15 @@
 #include "exactccd/exactccd.h"
 
 #include <cmath>
+#include <cstddef>
+#include <exception>
 #include <optional>
+#include <vector>
 
 #include "api/c_query.hpp"
 #include "exactccd/ccd.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "numeric/fp_environment.hpp"
 
 namespace {
 
@@ -60,9 +64,49 @@ exactccd_status answer_c_query(int kind, const double* query, double d, double t
   });
 }
 
+/// exactccd_toi_batch for queries of type Query (after the calls' checks): every query read and
+/// checked, then answered at once (answer_batch), then written.
+template <class Query>
+exactccd_status answer_c_batch(const double* queries, std::size_t count, const CcdParams& params, int* collides,
+                               double* lo, double* hi) {
+  using Kind = kinds::kind_of<Query>;
+  constexpr std::size_t size = 2 * Kind::points * Kind::dimension;
+  try {
+    std::vector<Query> read(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::optional<Query> q = read_any_query<Query>(queries + i * size);
+      if (!q) return EXACTCCD_ERROR_NON_FINITE;
+      read[i] = *q;
+    }
+    std::vector<std::optional<TimeInterval>> answers(count);
+    answer_batch(read.data(), count, params, Method::filtered, lo != nullptr, answers.data());
+    for (std::size_t i = 0; i < count; ++i) {
+      collides[i] = answers[i] ? 1 : 0;
+      if (answers[i] && lo) lo[i] = answers[i]->lo;
+      if (answers[i] && hi) hi[i] = answers[i]->hi;
+    }
+    return EXACTCCD_OK;
+  } catch (const std::exception&) {
+    return EXACTCCD_ERROR_INTERNAL;
+  }
+}
+
 }  // namespace
 
 extern "C" {
+
+exactccd_status exactccd_toi_batch(int kind, const double* queries, size_t count, double min_distance, double tmax,
+                                   int* collides, double* lo, double* hi) {
+  if ((count > 0 && (!queries || !collides)) || (lo == nullptr) != (hi == nullptr)) return EXACTCCD_ERROR_NULL;
+  const numeric::DefaultFpEnvironment fp_environment;  // first: DAZ would read -2^-1074 as -0
+  if (!(std::isfinite(min_distance) && min_distance >= 0 && tmax > 0 && tmax <= 1)) return EXACTCCD_ERROR_PARAMETER;
+  exactccd_status status = EXACTCCD_ERROR_PARAMETER;  // an unknown kind
+  visit_c_kind(kind, [&](auto k) {
+    using Query = typename decltype(k)::template Query<double>;
+    status = answer_c_batch<Query>(queries, count, CcdParams{min_distance, tmax}, collides, lo, hi);
+  });
+  return status;
+}
 
 int exactccd_query_size(int kind) {
   int size = 0;

@@ -88,7 +88,32 @@ std::optional<TimeInterval> answer(const Query& q, const CcdParams& params, Meth
   return questions::filtered_method(q, question, counters);
 }
 
+/// require_valid_query for query `index` of a batch: the same message, with the index.
+template <class Query>
+void require_valid_batch_query(const Query& q, std::size_t index, bool want_toi) {
+  try {
+    require_valid_query(q, want_toi);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(e.what()) + " (query " + std::to_string(index) + " of the batch)");
+  }
+}
+
 }  // namespace
+
+template <class Query>
+void answer_batch(const Query* queries, std::size_t count, const CcdParams& params, Method method, bool want_toi,
+                  std::optional<TimeInterval>* answers, StageCounters* counters) {
+  const numeric::DefaultFpEnvironment fp_environment;  // whatever the caller's thread has set
+  require_valid<Query>(params, method, want_toi);
+  for (std::size_t i = 0; i < count; ++i) require_valid_batch_query(queries[i], i, want_toi);
+  const pipeline::Question question{params, want_toi};
+  if constexpr (!is_rigid<Query>) {  // rigid queries: no block stages yet, one by one
+    if (method == Method::filtered) return questions::filtered_batch(queries, count, question, counters, answers);
+  }
+  for (std::size_t i = 0; i < count; ++i)
+    answers[i] = method == Method::exact ? questions::exact_method(queries[i], question)
+                                         : questions::filtered_method(queries[i], question, counters);
+}
 
 template <class Query>
 std::optional<TimeInterval> answer_query(const Query& q, const CcdParams& params, Method method, bool want_toi,
@@ -138,6 +163,25 @@ template std::optional<TimeInterval> answer_query(const PointPointQuery&, const 
 template std::optional<TimeInterval> answer_query(const EdgeEdge2dQuery&, const CcdParams&, Method, bool, StageCounters*);
 template std::optional<TimeInterval> answer_query(const PointEdge2dQuery&, const CcdParams&, Method, bool, StageCounters*);
 template std::optional<TimeInterval> answer_query(const PointPoint2dQuery&, const CcdParams&, Method, bool, StageCounters*);
+
+template void answer_batch(const VertexFaceQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const EdgeEdgeQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const PointEdgeQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const PointPointQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const EdgeEdge2dQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const PointEdge2dQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const PointPoint2dQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const RigidVertexFaceQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
+template void answer_batch(const RigidEdgeEdgeQuery*, std::size_t, const CcdParams&, Method, bool,
+                           std::optional<TimeInterval>*, StageCounters*);
 
 template std::optional<TimeInterval> answer_checked_query(const VertexFaceQuery&, const CcdParams&, bool);
 template std::optional<TimeInterval> answer_checked_query(const EdgeEdgeQuery&, const CcdParams&, bool);

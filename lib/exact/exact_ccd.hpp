@@ -31,8 +31,8 @@ std::optional<TimeInterval> toi(const RationalEdgeEdgeQuery& q);
 struct ExactContactStage {
   static constexpr pipeline::Counter counter = &StageCounters::exact;  ///< counted as
   /// The exact answer, with the TOI when asked.
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     const auto rational = to_rational(work.query());
     if (!work.question.want_toi) return ccd(rational) ? pipeline::Outcome::collides() : pipeline::Outcome::separate();
     const auto t = toi(rational);

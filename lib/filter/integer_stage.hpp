@@ -68,8 +68,8 @@ pipeline::Outcome fixed_integer_stage(const EdgeEdgeQuery& q, bool want_toi);
 struct FixedIntegerStage {
   static constexpr pipeline::Counter counter = &StageCounters::fixed_integer;  ///< counted as
   /// The stage on work.query() (also, after a collision was proved, for its TOI).
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     return fixed_integer_stage(work.query(), work.question.want_toi);
   }
 };
@@ -78,8 +78,8 @@ struct FixedIntegerStage {
 struct IntegerStage {
   static constexpr pipeline::Counter counter = &StageCounters::integer;  ///< counted as
   /// The stage on work.query() (also, after a collision was proved, for its TOI).
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     return integer_stage(work.query(), work.question.want_toi);
   }
 };

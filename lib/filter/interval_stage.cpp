@@ -85,7 +85,7 @@ struct ExactEnds {
 /// The stage on one query: the strategies of the file comment, in order.
 template <class IntervalQuery, class Query>
 Outcome run_interval_stage(const IntervalQuery& q, const Query& double_query, bool want_toi,
-                           pipeline::Findings& findings) {
+                           RootCells& findings) {
   const auto P = contact::polynomials(q);
   if (interval::exactly_zero(P.volume())) return interval::coplanar_strategy(P, want_toi, findings.rule_toi_cell);
   const Outcome moving = interval::moving_strategy(P, ExactEnds<Query>{double_query}, want_toi, findings.toi_cell);
@@ -110,7 +110,7 @@ Outcome run_interval_stage(const IntervalQuery& q, const Query& double_query, bo
 }
 
 template <class Query>
-Outcome interval_stage_of(const Query& q, bool want_toi, pipeline::Findings& findings) {
+Outcome interval_stage_of(const Query& q, bool want_toi, RootCells& findings) {
   CGAL::Protect_FPU_rounding<true> rounding_towards_infinity;
   using IntervalQuery = typename kinds::kind_of<Query>::template Query<Interval>;
   return run_interval_stage(to_interval_query<IntervalQuery>(q), q, want_toi, findings);
@@ -118,10 +118,10 @@ Outcome interval_stage_of(const Query& q, bool want_toi, pipeline::Findings& fin
 
 }  // namespace
 
-Outcome interval_stage(const VertexFaceQuery& q, bool want_toi, pipeline::Findings& findings) {
+Outcome interval_stage(const VertexFaceQuery& q, bool want_toi, RootCells& findings) {
   return interval_stage_of(q, want_toi, findings);
 }
-Outcome interval_stage(const EdgeEdgeQuery& q, bool want_toi, pipeline::Findings& findings) {
+Outcome interval_stage(const EdgeEdgeQuery& q, bool want_toi, RootCells& findings) {
   return interval_stage_of(q, want_toi, findings);
 }
 

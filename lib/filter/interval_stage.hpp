@@ -5,25 +5,26 @@
 #pragma once
 
 #include "exactccd/types.hpp"
+#include "filter/root_cells.hpp"
 #include "pipeline/outcome.hpp"
 
 namespace exactccd::filter {
 
 /// Stage 2 for vertex-face. With want_toi, a collision's TOI is certified, or its root cell is
-/// handed over in findings.toi_cell (when it is V's simple root) or findings.rule_toi_cell
+/// handed over in cells.toi_cell (when it is V's simple root) or cells.rule_toi_cell
 /// (a simple root of another polynomial of the rule: V identically zero, or factored), or
 /// neither.
-pipeline::Outcome interval_stage(const VertexFaceQuery& q, bool want_toi, pipeline::Findings& findings);
+pipeline::Outcome interval_stage(const VertexFaceQuery& q, bool want_toi, RootCells& cells);
 
-/// Stage 2 for edge-edge; see interval_stage(const VertexFaceQuery&, bool, pipeline::Findings&).
-pipeline::Outcome interval_stage(const EdgeEdgeQuery& q, bool want_toi, pipeline::Findings& findings);
+/// Stage 2 for edge-edge; see interval_stage(const VertexFaceQuery&, bool, RootCells&).
+pipeline::Outcome interval_stage(const EdgeEdgeQuery& q, bool want_toi, RootCells& cells);
 
-/// Stage 2 in the contact question's stage list.
+/// Stage 2 in the contact question's stage list (its findings hold RootCells).
 struct IntervalStage {
   static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
   /// The stage on work.query().
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     return interval_stage(work.query(), work.question.want_toi, work.findings);
   }
 };

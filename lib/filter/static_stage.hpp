@@ -43,8 +43,8 @@ int volume_sign_at_end(const EdgeEdgeQuery& q, int end);
 struct StaticQueryStage {
   static constexpr pipeline::Counter counter = &StageCounters::static_predicates;  ///< counted as
   /// Decides static queries, passes the others on.
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     if (!is_static(work.query())) return pipeline::Outcome::undecided();
     if (!contact_at_end(work.query(), 0)) return pipeline::Outcome::separate();
     return pipeline::Outcome::collides(TimeInterval{0.0, 0.0});

@@ -19,7 +19,7 @@ namespace {
 /// A guess of V's root in the cell: Newton's method on V built in long double from the doubles
 /// (only a guess: the narrowing certifies signs at whatever it returns).
 template <class Query>
-double root_guess(const Query& q, const pipeline::VolumeRootCell& cell) {
+double root_guess(const Query& q, const VolumeRootCell& cell) {
   using LongQuery = typename kinds::kind_of<Query>::template Query<long double>;
   std::array<Vec3T<long double>, 8> long_rows;
   const auto r = rows(q);
@@ -31,7 +31,7 @@ double root_guess(const Query& q, const pipeline::VolumeRootCell& cell) {
 }
 
 template <class IntegerQuery, class Query>
-std::optional<TimeInterval> narrow_toi_in_cell(const Query& q, const pipeline::VolumeRootCell& cell) {
+std::optional<TimeInterval> narrow_toi_in_cell(const Query& q, const VolumeRootCell& cell) {
   if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
   // Signs: double-double first (certified, usually decisive; the query scaled once for every
   // t), exact V in GMP on demand. The double-double values steer the secant steps (an exact
@@ -66,11 +66,11 @@ std::array<long double, 5> scaled_coefficients(const exact::IntegerPoly& p) {
   return c;
 }
 
-/// The rule's polynomial `poly` (pipeline::RulePoly) of the integer query, exactly: built alone
+/// The rule's polynomial `poly` (RulePoly) of the integer query, exactly: built alone
 /// (an in-plane polynomial's terms on use; a relative motion's coordinate). Zero when `poly`
 /// names none.
 template <class IntegerQuery>
-exact::IntegerPoly rule_poly(const IntegerQuery& q, const pipeline::RulePoly& poly) {
+exact::IntegerPoly rule_poly(const IntegerQuery& q, const RulePoly& poly) {
   exact::IntegerPoly p;  // zero until built
   if (poly.in_plane >= 0) {
     const auto P = contact::polynomials(q);
@@ -84,7 +84,7 @@ exact::IntegerPoly rule_poly(const IntegerQuery& q, const pipeline::RulePoly& po
 }
 
 template <class IntegerQuery, class Query>
-std::optional<TimeInterval> narrow_toi_in_rule_cell(const Query& q, const pipeline::RuleRootCell& cell) {
+std::optional<TimeInterval> narrow_toi_in_rule_cell(const Query& q, const RuleRootCell& cell) {
   if (!(0 <= cell.lo && cell.lo < cell.hi && cell.hi <= 1) || cell.sign_at_lo == 0) return std::nullopt;
   const exact::IntegerPoly p = rule_poly(to_integer_query<IntegerQuery>(q), cell.poly);
   // The cell as handed over: exact signs at its ends (a guard: never a TOI from a wrong cell).
@@ -106,19 +106,19 @@ std::optional<TimeInterval> narrow_toi_in_rule_cell(const Query& q, const pipeli
 
 }  // namespace
 
-std::optional<TimeInterval> toi_in_rule_cell(const VertexFaceQuery& q, const pipeline::RuleRootCell& cell) {
+std::optional<TimeInterval> toi_in_rule_cell(const VertexFaceQuery& q, const RuleRootCell& cell) {
   return narrow_toi_in_rule_cell<VertexFaceQueryT<Integer>>(q, cell);
 }
 
-std::optional<TimeInterval> toi_in_rule_cell(const EdgeEdgeQuery& q, const pipeline::RuleRootCell& cell) {
+std::optional<TimeInterval> toi_in_rule_cell(const EdgeEdgeQuery& q, const RuleRootCell& cell) {
   return narrow_toi_in_rule_cell<EdgeEdgeQueryT<Integer>>(q, cell);
 }
 
-std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const pipeline::VolumeRootCell& cell) {
+std::optional<TimeInterval> toi_in_cell(const VertexFaceQuery& q, const VolumeRootCell& cell) {
   return narrow_toi_in_cell<VertexFaceQueryT<Integer>>(q, cell);
 }
 
-std::optional<TimeInterval> toi_in_cell(const EdgeEdgeQuery& q, const pipeline::VolumeRootCell& cell) {
+std::optional<TimeInterval> toi_in_cell(const EdgeEdgeQuery& q, const VolumeRootCell& cell) {
   return narrow_toi_in_cell<EdgeEdgeQueryT<Integer>>(q, cell);
 }
 

@@ -92,8 +92,8 @@ Query scaled_to_unit(const Query& q, bool& scaled) {
 struct VolumeRetryStage {
   static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
   /// Rescales work.query() and retries stage 1, only after an out-of-range stage 1.
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     if (!work.findings.volume_out_of_range) return pipeline::Outcome::undecided();
     if (!scale_to_unit(work.query(), work.replacement())) return pipeline::Outcome::undecided();
     work.use_replacement();
@@ -110,8 +110,8 @@ struct VolumeRetryStage {
 struct UnitScalingStage {
   static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< never decides
   /// Rescales work.query(); always undecided.
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     if (scale_to_unit(work.query(), work.replacement())) work.use_replacement();
     return pipeline::Outcome::undecided();
   }

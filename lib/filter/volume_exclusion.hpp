@@ -63,6 +63,9 @@
 
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "filter/volume_block.hpp"
+#include "numeric/simd_level.hpp"
+#include "pipeline/block.hpp"
 #include "pipeline/outcome.hpp"
 
 namespace exactccd::filter {
@@ -159,31 +162,50 @@ inline double underflow_threshold(const Vec3& u0, const Vec3& u1, const Vec3& v0
   return m * 0x1p-1000 + 0x1p-1000;  // T >= (M + 1) 2^-1014, see above
 }
 
-/// V's cubic Bernstein coefficients on [0, 1] times C(3, m) (beta_0 .. beta_3 of the comment
-/// above), each with its certified error bound; nothing when a bound does not apply. The same
-/// computation and proof as volume_exclusion, for callers that need the coefficients
-/// themselves (the scene's time bounds subdivide them, lib/scene/time_bounds.cpp).
-inline std::optional<std::array<CertifiedSum, 4>> certified_volume_bernstein(const Vec3& u0, const Vec3& u1,
-                                                                             const Vec3& v0, const Vec3& v1,
-                                                                             const Vec3& w0, const Vec3& w1) {
+/// What stage 1 decides on: V's four Bernstein group sums S~_m (beta_m of the comment above,
+/// m = 0..3) with their permanent sums Q~_m, and the underflow threshold T of the 18 entries.
+/// The one evaluation of the stage's arithmetic: the per-query stage, the block form
+/// (volume_block.hpp: the same function per lane) and the scene's time bounds all use it.
+struct VolumeGroups {
+  double threshold;                ///< T
+  std::array<double, 4> sum;       ///< S~_m
+  std::array<double, 4> permanent;  ///< Q~_m
+};
+
+/// The groups of det[u(t), v(t), w(t)], rows given at t = 0 and t = 1: the eight determinants
+/// D_ijk = u_i . c_jk (c_jk the cross terms of v_j and w_k, each formed once: CrossTerms) in
+/// orient3dfast's order, summed by group in the order of the proof.
+[[gnu::always_inline]] inline VolumeGroups volume_groups(const Vec3& u0, const Vec3& u1, const Vec3& v0,
+                                                         const Vec3& v1, const Vec3& w0, const Vec3& w1) {
   const double threshold = underflow_threshold(u0, u1, v0, v1, w0, w1);
   const CrossTerms c00 = cross_terms(v0, w0), c11 = cross_terms(v1, w1), c10 = cross_terms(v1, w0),
-                   c01 = cross_terms(v0, w1);  // c_jk: of v_j and w_k
+                   c01 = cross_terms(v0, w1);
   const RoundedDeterminant d000 = rounded_determinant(u0, c00), d111 = rounded_determinant(u1, c11);
   const RoundedDeterminant d100 = rounded_determinant(u1, c00), d010 = rounded_determinant(u0, c10),
                            d001 = rounded_determinant(u0, c01);
   const RoundedDeterminant d110 = rounded_determinant(u1, c10), d101 = rounded_determinant(u1, c01),
                            d011 = rounded_determinant(u0, c11);
-  const std::optional<CertifiedSum> b[4] = {
-      certified_group(d000.value, d000.permanent, threshold),
-      certified_group(d100.value + d010.value + d001.value, d100.permanent + d010.permanent + d001.permanent,
-                      threshold),
-      certified_group(d110.value + d101.value + d011.value, d110.permanent + d101.permanent + d011.permanent,
-                      threshold),
-      certified_group(d111.value, d111.permanent, threshold)};
-  for (const auto& x : b)
-    if (!x) return std::nullopt;
-  return std::array<CertifiedSum, 4>{*b[0], *b[1], *b[2], *b[3]};
+  return {threshold,
+          {d000.value, d100.value + d010.value + d001.value, d110.value + d101.value + d011.value, d111.value},
+          {d000.permanent, d100.permanent + d010.permanent + d001.permanent,
+           d110.permanent + d101.permanent + d011.permanent, d111.permanent}};
+}
+
+/// V's cubic Bernstein coefficients on [0, 1] times C(3, m) (beta_0 .. beta_3 of the comment
+/// above), each with its certified error bound; nothing when a bound does not apply. The same
+/// groups and proof as volume_exclusion, for callers that need the coefficients themselves
+/// (the scene's time bounds subdivide them, lib/scene/time_bounds.cpp).
+inline std::optional<std::array<CertifiedSum, 4>> certified_volume_bernstein(const Vec3& u0, const Vec3& u1,
+                                                                             const Vec3& v0, const Vec3& v1,
+                                                                             const Vec3& w0, const Vec3& w1) {
+  const VolumeGroups g = volume_groups(u0, u1, v0, v1, w0, w1);
+  std::array<CertifiedSum, 4> b{};
+  for (std::size_t m = 0; m < 4; ++m) {
+    const std::optional<CertifiedSum> c = certified_group(g.sum[m], g.permanent[m], g.threshold);
+    if (!c) return std::nullopt;
+    b[m] = *c;
+  }
+  return b;
 }
 
 /// What stage 1 proved about a volume.
@@ -194,8 +216,76 @@ enum class Exclusion {
   out_of_range,  ///< a bound needed did not apply (underflow guard or overflow)
 };
 
-/// Stage 1 on the volume det[u(t), v(t), w(t)], rows given at t = 0 and t = 1 as rounded
-/// differences of the input points. On a query scaled by 2^s every rounded value above is the
+/// certified_group_sign(sum, permanent_sum, threshold) as three flags, in operations a vector
+/// lane can do: +1 is `positive`, -1 `negative`, kOutOfRange `out_of_range`, 0 none of them.
+/// (Flags through references, not a struct: a struct of flags stayed in memory after inlining
+/// and kept the block form's loop from being vectorized.)
+[[gnu::always_inline]] inline void group_sign(double sum, double permanent_sum, double threshold, bool& positive,
+                                              bool& negative, bool& out_of_range) {
+  const bool in_range = permanent_sum >= threshold;  // the underflow guard; false for NaN
+  const double tau = group_error_bound(permanent_sum);
+  positive = in_range & (sum > tau);
+  negative = in_range & (sum < -tau);
+  const bool open = (!positive) & (!negative);
+  out_of_range = (!in_range) | (open & !(tau < std::numeric_limits<double>::infinity()));
+}
+
+/// Stage 1's verdict from the groups `g`, as flags: `excluded` when all four signs are certain
+/// and equal; otherwise `out_of_range` when the first group that differs from group 0's certain
+/// sign (or group 0 itself, when its sign is not certain), comparing in the order 0, 3, 1, 2, is
+/// out of range (its bound did not apply: worth retrying on the query scaled towards 1), else
+/// neither (not proven). Branch-free, so that the block form evaluates it in vector lanes (flags
+/// through references, as group_sign's).
+[[gnu::always_inline]] inline void stage_one_verdict(const VolumeGroups& g, bool& excluded, bool& out_of_range) {
+  bool p0, n0, o0, p1, n1, o1, p2, n2, o2, p3, n3, o3;
+  group_sign(g.sum[0], g.permanent[0], g.threshold, p0, n0, o0);
+  group_sign(g.sum[1], g.permanent[1], g.threshold, p1, n1, o1);
+  group_sign(g.sum[2], g.permanent[2], g.threshold, p2, n2, o2);
+  group_sign(g.sum[3], g.permanent[3], g.threshold, p3, n3, o3);
+  const bool differs0 = (!p0) & (!n0);  // group 0's sign not certain
+  const bool differs3 = !((p0 & p3) | (n0 & n3));
+  const bool differs1 = !((p0 & p1) | (n0 & n1));
+  const bool differs2 = !((p0 & p2) | (n0 & n2));
+  const bool same0 = !differs0, same3 = !differs3, same1 = !differs1, same2 = !differs2;
+  out_of_range = (differs0 & o0) | (same0 & differs3 & o3) | (same0 & same3 & differs1 & o1) |
+                 (same0 & same3 & same1 & differs2 & o2);
+  excluded = same0 & same3 & same1 & same2;
+}
+
+/// Stage 1's verdict on `g` as an Exclusion.
+inline Exclusion exclusion_of(const VolumeGroups& g) {
+  bool excluded = false, out_of_range = false;
+  stage_one_verdict(g, excluded, out_of_range);
+  return excluded ? Exclusion::excluded : out_of_range ? Exclusion::out_of_range : Exclusion::not_proven;
+}
+
+/// a - b rounded, coordinate by coordinate: the rows of a volume from the query's points.
+inline Vec3 rounded_difference(const Vec3& a, const Vec3& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+
+/// The groups of the volume of a query of a kind with contact stages (Kind::volume_rows:
+/// det[u - base, v - base, w - base]), from its rows: row(i) is row i of the query (rows(q)
+/// order: the points at t0, then at t1), so that the per-query stage and the block form
+/// (volume_block.cpp: row(i) reads a lane) take the same rows in the same order.
+template <class Kind, class Row>
+[[gnu::always_inline]] inline VolumeGroups volume_groups_of(const Row& row) {
+  constexpr auto v = Kind::volume_rows;
+  constexpr int n = Kind::points;  // the row of a point at t1 is n rows after its row at t0
+  return volume_groups(rounded_difference(row(v[1]), row(v[0])), rounded_difference(row(v[1] + n), row(v[0] + n)),
+                       rounded_difference(row(v[2]), row(v[0])), rounded_difference(row(v[2] + n), row(v[0] + n)),
+                       rounded_difference(row(v[3]), row(v[0])), rounded_difference(row(v[3] + n), row(v[0] + n)));
+}
+
+/// The groups of query q's volume (volume_groups_of).
+template <class Query>
+inline VolumeGroups volume_groups(const Query& q) {
+  const auto r = rows(q);
+  return volume_groups_of<kinds::kind_of<Query>>([&](int i) { return r[static_cast<std::size_t>(i)]; });
+}
+
+/// Stage 1 for any kind: its volume V never vanishes on [0, 1], so the four points are never
+/// coplanar. On a query scaled by 2^s every rounded value above is the
 /// unscaled one times 2^s, 2^2s or 2^3s (by degree) unless a value is subnormal or overflows in
 /// either run, and each sign test S~ > tau compares values of the same degree. The underflow
 /// guard Q~ >= T does not scale alike (T is not a pure power of the scale), but where it passes
@@ -204,55 +294,9 @@ enum class Exclusion {
 /// the subnormal cases. The filtered method therefore retries on the query scaled towards 1
 /// (filter/unit_scaling.hpp, VolumeRetryStage) only after out_of_range; skipping a retry can only leave a query to the
 /// later stages, which are sound for every input.
-inline Exclusion volume_exclusion(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, const Vec3& w0,
-                                  const Vec3& w1) {
-  const double threshold = underflow_threshold(u0, u1, v0, v1, w0, w1);
-  const auto verdict = [](int s, int s0) {
-    return s == kOutOfRange ? Exclusion::out_of_range : s == s0 ? Exclusion::excluded : Exclusion::not_proven;
-  };
-  // D_ijk = u_i . c_jk, c_jk the cross terms of v_j and w_k, each formed once (CrossTerms).
-  const CrossTerms c00 = cross_terms(v0, w0);
-  const RoundedDeterminant d000 = rounded_determinant(u0, c00);
-  const int s0 = certified_group_sign(d000.value, d000.permanent, threshold);
-  if (s0 == 0 || s0 == kOutOfRange) return verdict(s0, 1);
-  const CrossTerms c11 = cross_terms(v1, w1);
-  const RoundedDeterminant d111 = rounded_determinant(u1, c11);
-  if (const Exclusion e = verdict(certified_group_sign(d111.value, d111.permanent, threshold), s0);
-      e != Exclusion::excluded)
-    return e;
-  const CrossTerms c10 = cross_terms(v1, w0), c01 = cross_terms(v0, w1);
-  const RoundedDeterminant d100 = rounded_determinant(u1, c00);
-  const RoundedDeterminant d010 = rounded_determinant(u0, c10);
-  const RoundedDeterminant d001 = rounded_determinant(u0, c01);
-  if (const Exclusion e = verdict(certified_group_sign(d100.value + d010.value + d001.value,
-                                                       d100.permanent + d010.permanent + d001.permanent, threshold),
-                                  s0);
-      e != Exclusion::excluded)
-    return e;
-  const RoundedDeterminant d110 = rounded_determinant(u1, c10);
-  const RoundedDeterminant d101 = rounded_determinant(u1, c01);
-  const RoundedDeterminant d011 = rounded_determinant(u0, c11);
-  return verdict(certified_group_sign(d110.value + d101.value + d011.value,
-                                      d110.permanent + d101.permanent + d011.permanent, threshold),
-                 s0);
-}
-
-inline Vec3 rounded_difference(const Vec3& a, const Vec3& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-
-/// Stage 1 for any kind: its volume V (kinds::...::volume_rows: det[u - base, v - base,
-/// w - base]) never vanishes on [0, 1], so the four points are never coplanar.
 template <class Query>
 inline Exclusion volume_exclusion(const Query& q) {
-  using Kind = kinds::kind_of<Query>;
-  constexpr auto v = Kind::volume_rows;
-  constexpr int n = Kind::points;  // the row of a point at t1 is n rows after its row at t0
-  const auto r = rows(q);
-  return volume_exclusion(
-      rounded_difference(r[v[1]], r[v[0]]), rounded_difference(r[v[1] + n], r[v[0] + n]),
-      rounded_difference(r[v[2]], r[v[0]]), rounded_difference(r[v[2] + n], r[v[0] + n]),
-      rounded_difference(r[v[3]], r[v[0]]), rounded_difference(r[v[3] + n], r[v[0] + n]));
+  return exclusion_of(volume_groups(q));
 }
 
 /// volume_exclusion(q) is excluded.
@@ -261,17 +305,34 @@ inline bool volume_excluded(const Query& q) {
   return volume_exclusion(q) == Exclusion::excluded;
 }
 
+/// Stage 1's handover to VolumeRetryStage (unit_scaling.hpp): its bound could not apply
+/// (underflow guard or overflow), so a retry on the query scaled towards 1 may decide.
+struct VolumeRange {
+  bool volume_out_of_range = false;  ///< stage 1 ended out_of_range
+};
+
 /// Stage 1 of the contact question (pipeline/outcome.hpp): V(t) != 0 on [0, 1], so the four
 /// points are never coplanar and the primitives never touch. Hands over whether its bound
-/// could not apply (volume_out_of_range: worth a retry on the query scaled towards 1).
+/// could not apply (VolumeRange: worth a retry on the query scaled towards 1). Its block form
+/// (pipeline/block.hpp) decides a block of queries in vector lanes (volume_block.hpp), the same
+/// verdict and handover per lane.
 struct VolumeExclusionStage {
   static constexpr pipeline::Counter counter = &StageCounters::volume_exclusion;  ///< counted as
   /// The stage on work.query().
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     const Exclusion e = volume_exclusion(work.query());
     work.findings.volume_out_of_range = e == Exclusion::out_of_range;
     return e == Exclusion::excluded ? pipeline::Outcome::separate() : pipeline::Outcome::undecided();
+  }
+
+  /// The stage on every lane of `lanes` at numeric::simd_level().
+  template <class Query, class Findings>
+  pipeline::LaneDecisions block(const pipeline::QueryLanes<Query>& lanes, const pipeline::Question&,
+                                std::array<Findings, pipeline::kLanes>& findings) const {
+    const VolumeLaneVerdicts v = volume_exclusion_block(lanes, numeric::simd_level());
+    for (std::size_t i = 0; i < lanes.size; ++i) findings[i].volume_out_of_range = (v.out_of_range >> i & 1u) != 0;
+    return {v.excluded, 0};
   }
 };
 

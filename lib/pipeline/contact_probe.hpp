@@ -13,8 +13,8 @@
 namespace exactccd::pipeline {
 
 /// The probe over `contact`, a callable `Outcome contact(const Query&, const Question&,
-/// StageCounters*, Findings&)` answering the contact question of the query (counted in the
-/// counters it is given; what it learns in the Findings, used_gmp among them; undecided allowed).
+/// StageCounters*, GmpUse&)` answering the contact question of the query (counted in the
+/// counters it is given; whether it used GMP or CGAL in the GmpUse; undecided allowed).
 /// A collision is counted at the contact stage that found it (its TOI t0 bounds the earliest
 /// time within d from above: [0, hi] encloses it); otherwise nothing is counted, and GMP or CGAL
 /// use is handed over (findings.used_gmp: the deciding stage then counts as `integer`; the
@@ -24,11 +24,11 @@ struct ContactProbeStage {
   static constexpr Counter counter = nullptr;  ///< counts for itself (above)
   Contact contact;                             ///< the motion model's contact question
   /// The probe, for the answer alone (undecided when the TOI is asked).
-  template <class Query>
-  Outcome operator()(Work<Query>& work) const {
+  template <class Query, class Findings>
+  Outcome operator()(Work<Query, Findings>& work) const {
     if (work.question.want_toi) return Outcome::undecided();
     StageCounters probe;
-    Findings found;
+    GmpUse found;
     const Outcome touch = contact(work.query(), Question{{0.0, work.question.params.tmax}, false}, &probe, found);
     if (touch.answer == Outcome::Answer::collides) {
       if (work.counters) *work.counters += probe;

@@ -5,8 +5,10 @@
 // question (Work: the query, CcdParams, whether the TOI is asked) and returns an Outcome:
 // decided (the primitives collide, with the TOI when the stage certified it, or they stay
 // apart), or undecided; what it learned on the way (a root cell, the feature pairs proven
-// apart, ...) it leaves in the Work's findings for the stages after it. run_stages.hpp is the
-// whole policy; the stage lists of each question are in lib/questions/.
+// apart, ...) it leaves in the Work's findings for the stages after it (the handover types
+// live beside the stages that make and read them; each list's Findings gathers its stages').
+// run_stages.hpp is the whole policy, block.hpp the same policy on blocks of lanes; the stage
+// lists of each question are in lib/questions/.
 #pragma once
 
 #include <cstdint>
@@ -58,65 +60,25 @@ inline std::optional<TimeInterval> cut(const std::optional<TimeInterval>& t, dou
   return within ? t : std::nullopt;
 }
 
-/// A dyadic cell [lo, hi] of [0, 1] holding exactly one root of the contact volume V, a simple
-/// one, with V's (nonzero) sign at lo (the opposite at hi).
-struct VolumeRootCell {
-  double lo = 0, hi = 1;
-  int sign_at_lo = 0;
-};
-
-/// A polynomial of the contact rule other than V, named so that a later stage can build it
-/// exactly from the query: one of the in-plane polynomials (contact::visit_in_plane_poly's
-/// index in_plane >= 0), or else coordinate `coordinate` of the relative motion from row `from`
-/// to row `to` of the query (contact::relative_motion: linear; a factor of V in the interval
-/// stage's factored view).
-struct RulePoly {
-  int in_plane = -1;
-  int from = 0, to = 0, coordinate = 0;
-};
-
-/// A root cell of a polynomial `poly` of the contact rule other than V: the open cell (lo, hi)
-/// of doubles holds exactly one root t* of it, a simple one, with its (nonzero) sign sign_at_lo
-/// at lo (the opposite at hi); the rule holds at t*; and every other candidate time where
-/// contact holds or is undecided is >= later_from. So t* is the TOI when the tightest double
-/// interval around it ends at or before later_from.
-struct RuleRootCell {
-  double lo = 0, hi = 1;
-  int sign_at_lo = 0;
-  RulePoly poly;
-  double later_from = 0;
-};
-
-/// What the stages learned about a query and hand over to the later ones. Each stage list
-/// (lib/questions/) says at its list which stage writes a field and which reads it.
-struct Findings {
-  /// Contact: the TOI is V's simple root in this cell (the interval stage proved the collision
-  /// and isolated the root, but did not narrow it to adjacent doubles).
-  std::optional<VolumeRootCell> toi_cell;
-  /// Contact, V identically zero or factored: the TOI is the root in this cell of a polynomial
-  /// of the rule if it is no later than the cell's later_from (the interval stage proved the
-  /// collision there and isolated the root, but did not narrow it to adjacent doubles).
-  std::optional<RuleRootCell> rule_toi_cell;
-  /// Contact: the static volume filter could not apply its bound (underflow guard or overflow):
-  /// worth retrying on the query scaled towards 1.
-  bool volume_out_of_range = false;
-  /// Minimum separation: the feature pairs not proven apart (a pair a direction keeps farther
-  /// than d apart over [0, 1] holds nowhere; the exact path leaves it out).
-  kinds::FeatureMask use = kinds::kAllFeatures;
-  /// GMP or CGAL was used on the way (an exact sign, the contact probe's integer stage): the
-  /// deciding stage counts as `integer` (counted_with_gmp).
-  bool used_gmp = false;
+/// The handover every stage list shares: GMP or CGAL was used on the way (an exact sign, the
+/// contact probe's integer stage), so the deciding stage counts as `integer` (counted_with_gmp).
+/// Each list's findings (a struct of the handovers of its stages, defined beside the stages that
+/// make and read them: filter/, separation/, rigid/) derive from it.
+struct GmpUse {
+  bool used_gmp = false;  ///< GMP or CGAL was used by an earlier stage
 };
 
 /// The outcome `o` of a stage that counts as `integer` when GMP or CGAL was used on the way
 /// (findings.used_gmp, by it or an earlier stage), else at its own counter.
-inline Outcome counted_with_gmp(Outcome o, const Findings& findings) {
+inline Outcome counted_with_gmp(Outcome o, const GmpUse& findings) {
   if (findings.used_gmp) o.counted_as = &StageCounters::integer;
   return o;
 }
 
-/// A query on its way through the stages.
-template <class Query>
+/// A query on its way through the stages, with what the stages learned (Findings: the stage
+/// list's handovers, each defined beside the stages that make and read it; a list says at its
+/// definition which stage writes a field and which reads it).
+template <class Query, class Findings>
 class Work {
  public:
   /// The query `q` (referred to, not copied: it must outlive the Work) asked `question`, counted
@@ -139,7 +101,7 @@ class Work {
   StageCounters* counters = nullptr;  ///< where the deciding stage is counted (may be null)
   /// An earlier stage proved a collision; the later ones only narrow its TOI.
   bool collides = false;
-  Findings findings;  ///< what earlier stages learned
+  Findings findings{};  ///< what earlier stages learned
 
  private:
   const Query* current_;

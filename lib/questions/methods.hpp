@@ -5,6 +5,7 @@
 // Included by the entry point (api/entry_point.cpp), which instantiates them for every kind.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <type_traits>
 
@@ -13,6 +14,7 @@
 #include "exactccd/stats.hpp"
 #include "exactccd/types.hpp"
 #include "kinds/primitive_kinds.hpp"
+#include "pipeline/block.hpp"
 #include "pipeline/contact_probe.hpp"
 #include "pipeline/outcome.hpp"
 #include "pipeline/run_stages.hpp"
@@ -64,8 +66,8 @@ std::optional<TimeInterval> contact_of_any_kind(const Query& q, const Question& 
 struct ContactOfEmbeddingStage {
   static constexpr Counter counter = nullptr;  ///< counts for itself, at the contact stage deciding
   /// The contact stages' answer.
-  template <class Query>
-  Outcome operator()(const Work<Query>& work) const {
+  template <class Query, class Findings>
+  Outcome operator()(const Work<Query, Findings>& work) const {
     const auto toi = contact_question(as_contact_query(work.query()), work.question, work.counters);
     return toi ? Outcome::collides(toi) : Outcome::separate();
   }
@@ -77,37 +79,59 @@ struct ContactOfEmbeddingStage {
 struct ContactOfAnyKind {
   /// The contact question's answer as an Outcome.
   template <class Query>
-  Outcome operator()(const Query& q, const Question& question, StageCounters* counters, pipeline::Findings&) const {
+  Outcome operator()(const Query& q, const Question& question, StageCounters* counters, pipeline::GmpUse&) const {
     const auto toi = contact_of_any_kind(q, question, counters);
     return toi ? Outcome::collides(toi) : Outcome::separate();
   }
 };
 
+/// The minimum-separation question's stage order (any kind, d > 0). SeparationFindings
+/// (separation_walk.hpp) in this list: used_gmp is written by the contact probe (GMP or CGAL in
+/// the contact question it asked) and by SeparationWalkStage (an exact sign in integers, the
+/// exact plane test), and read by SeparationWalkStage when it decides (counted `integer`); use
+/// is written by SeparationWalkStage (the feature pairs no direction keeps apart) and read by
+/// ExactSeparationStage (the exact path leaves the others out).
+inline constexpr pipeline::StageList kSeparationStages{
+    separation::SeparatingDirectionStage{},                  // a direction keeps them > d apart
+    pipeline::ContactProbeStage<ContactOfAnyKind>{},         // answer alone: touching is within d
+    separation::SeparationWalkStage{},                       // the terms over time cells, intervals
+    separation::ExactSeparationStage{}};                     // CGAL's algebraic kernel: always decides
+
+/// The contact question of the kinds without contact stages (no handover between the two).
+inline constexpr pipeline::StageList kEmbeddedContactStages{separation::SeparatingDirectionStage{},
+                                                            ContactOfEmbeddingStage{}};
+
 /// A query of any kind by the filtered method (the question validated by the entry point):
 /// certified floating-point stages first, the exact path last, each query counted at the stage
-/// deciding it (in `counters`, may be null). Findings (pipeline/outcome.hpp) in the
-/// minimum-separation list: used_gmp is written by the contact probe (GMP or CGAL in the contact
-/// question it asked) and by SeparationWalkStage (an exact sign in integers, the exact plane
-/// test), and read by SeparationWalkStage when it decides (counted `integer`); use is written by
-/// SeparationWalkStage (the feature pairs no direction keeps apart) and read by
-/// ExactSeparationStage (the exact path leaves the others out). The contact question's own
-/// findings are its list's (contact_question.cpp).
+/// deciding it (in `counters`, may be null). The contact question's own findings are its list's
+/// (contact_question.cpp).
 template <class Query>
 std::optional<TimeInterval> filtered_method(const Query& q, const Question& question, StageCounters* counters) {
   if (question.params.contact_only()) {
     if constexpr (has_contact_stages<Query>) {
       return contact_question(q, question, counters);
     } else {
-      Work<Query> work{q, question, counters};
-      return run_stages(work, separation::SeparatingDirectionStage{}, ContactOfEmbeddingStage{});
+      Work<Query, pipeline::GmpUse> work{q, question, counters};
+      return kEmbeddedContactStages.run(work);
     }
   }
-  Work<Query> work{q, question, counters};  // the minimum-separation question
-  return run_stages(work,
-                    separation::SeparatingDirectionStage{},       // a direction keeps them > d apart
-                    pipeline::contact_probe(ContactOfAnyKind{}),  // answer alone: touching is within d
-                    separation::SeparationWalkStage{},            // the terms over time cells, intervals
-                    separation::ExactSeparationStage{});          // CGAL's algebraic kernel: always decides
+  Work<Query, separation::SeparationFindings> work{q, question, counters};  // the minimum-separation question
+  return kSeparationStages.run(work);
+}
+
+/// filtered_method for queries[0, count) into answers[0, count): the same stage lists, run on
+/// blocks of queries where a list has block stages for the kind (pipeline::run_batch).
+template <class Query>
+void filtered_batch(const Query* queries, std::size_t count, const Question& question, StageCounters* counters,
+                    std::optional<TimeInterval>* answers) {
+  const auto into = [&](std::size_t i, const std::optional<TimeInterval>& answer) { answers[i] = answer; };
+  if (question.params.contact_only()) {
+    if constexpr (has_contact_stages<Query>)
+      return contact_question(queries, count, question, counters, answers);
+    else
+      return pipeline::run_batch<pipeline::GmpUse>(kEmbeddedContactStages, queries, count, question, counters, into);
+  }
+  pipeline::run_batch<separation::SeparationFindings>(kSeparationStages, queries, count, question, counters, into);
 }
 
 /// A query of any kind by the exact method (GMP and CGAL throughout; not counted): the contact
@@ -117,11 +141,11 @@ template <class Query>
 std::optional<TimeInterval> exact_method(const Query& q, const Question& question) {
   if constexpr (has_contact_stages<Query>) {
     if (question.params.contact_only()) {
-      Work<Query> work{q, {question.params, question.want_toi || !question.params.whole_step()}, nullptr};
+      Work<Query, pipeline::GmpUse> work{q, {question.params, question.want_toi || !question.params.whole_step()}, nullptr};
       return pipeline::cut(run_stages(work, exact::ExactContactStage{}), question.params.tmax);
     }
   }
-  Work<Query> work{q, question, nullptr};
+  Work<Query, separation::SeparationFindings> work{q, question, nullptr};  // use: every feature pair
   return run_stages(work, separation::ExactSeparationStage{});
 }
 

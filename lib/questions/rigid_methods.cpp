@@ -16,7 +16,7 @@
 //   rigid::ExactRigidStage           the exact path (exact_rigid.hpp, `exact`): always decides
 // The walks are counted `interval`, or `integer` when GMP was used on the way.
 //
-// Findings (pipeline/outcome.hpp) in these lists: used_gmp is written by the contact walk, the
+// Findings in these lists: pipeline::GmpUse alone; used_gmp is written by the contact walk, the
 // coplanar walk, the separation walk (an exact sign in GMP) and the contact probe (its nested
 // list's), and read by each walk when it decides (counted `integer`: pipeline::counted_with_gmp).
 // No other field is used: the separation walk leaves out the feature pairs a direction keeps
@@ -49,8 +49,8 @@ template <class Query>
 struct ContactWalks {
   rigid::SharedIntervalFrame<Query>* frame;  ///< the query's interval frame
   /// The walks' answer, with what they learned in `found`.
-  Outcome operator()(const Query& q, const Question& question, StageCounters* counters, pipeline::Findings& found) const {
-    Work<Query> work{q, question, counters};
+  Outcome operator()(const Query& q, const Question& question, StageCounters* counters, pipeline::GmpUse& found) const {
+    Work<Query, pipeline::GmpUse> work{q, question, counters};
     const Outcome o = pipeline::run_nested_stages(work, rigid::ContactWalkStage<Query>{frame}, rigid::CoplanarWalkStage{});
     found = work.findings;
     return o;
@@ -59,7 +59,7 @@ struct ContactWalks {
 
 template <class Query>
 std::optional<TimeInterval> filtered(const Query& q, const Question& question, StageCounters* counters) {
-  Work<Query> work{q, question, counters};
+  Work<Query, pipeline::GmpUse> work{q, question, counters};
   rigid::SharedIntervalFrame<Query> frame;
   if (question.params.contact_only())
     return run_stages(work,
@@ -78,7 +78,7 @@ std::optional<TimeInterval> filtered(const Query& q, const Question& question, S
 
 template <class Query>
 std::optional<TimeInterval> exact(const Query& q, const Question& question) {
-  Work<Query> work{q, question, nullptr};
+  Work<Query, pipeline::GmpUse> work{q, question, nullptr};
   return run_stages(work, rigid::ExactRigidStage{});
 }
 

@@ -43,7 +43,8 @@ struct ContactWalkStage {
   static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
   SharedIntervalFrame<Query>* frame;  ///< the query's interval frame, shared with later stages
   /// The walk over [0, tmax].
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     const CGAL::Protect_FPU_rounding<true> upward;  // the walk switches back where it needs
     const pipeline::Outcome o = contact_walk(work.query(), frame->of(work.query()), work.question.params.tmax,
                                              work.question.want_toi, work.findings.used_gmp);

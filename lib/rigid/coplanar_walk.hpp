@@ -56,8 +56,8 @@ pipeline::Outcome coplanar_walk(const RigidEdgeEdgeQuery& normalized_query, doub
 struct CoplanarWalkStage {
   static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
   /// The walk over [0, tmax] on the Work's normalized query.
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     if constexpr (std::is_same_v<Query, RigidEdgeEdgeQuery>) {
       const CGAL::Protect_FPU_rounding<true> upward;  // the walk switches back where it needs
       const pipeline::Outcome o =

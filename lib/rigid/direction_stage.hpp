@@ -98,8 +98,8 @@ extern template class DirectionFrame<RigidEdgeEdgeQuery>;
 struct DirectionStage {
   static constexpr pipeline::Counter counter = &StageCounters::separating_direction;  ///< counted as
   /// The certificate on the Work's normalized query and scaled d.
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     return DirectionFrame<Query>(work.query()).separated_beyond(work.question.params.min_distance)
                ? pipeline::Outcome::separate()
                : pipeline::Outcome::undecided();

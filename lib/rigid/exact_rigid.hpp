@@ -48,8 +48,8 @@ ReducedDegrees reduced_degrees(const RationalRigidEdgeEdgeQuery& q, const mpq_cl
 
 /// The exact path's answer to the Work's question (on its query, normalized or not: the same
 /// answer) as an Outcome.
-template <class Query>
-pipeline::Outcome exact_outcome(const pipeline::Work<Query>& work) {
+template <class Query, class Findings>
+pipeline::Outcome exact_outcome(const pipeline::Work<Query, Findings>& work) {
   const CcdParams& p = work.question.params;
   const auto t = exact_toi(exact::to_rational(work.query()), RationalCcdParams{p.min_distance, p.tmax});
   return t ? pipeline::Outcome::collides(t) : pipeline::Outcome::separate();
@@ -59,8 +59,8 @@ pipeline::Outcome exact_outcome(const pipeline::Work<Query>& work) {
 struct ExactRigidStage {
   static constexpr pipeline::Counter counter = &StageCounters::exact;  ///< counted as
   /// The exact answer, with the TOI.
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     return exact_outcome(work);
   }
 };

@@ -31,7 +31,8 @@ struct RigidSeparationWalkStage {
   static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
   SharedIntervalFrame<Query>* frame;  ///< the query's interval frame, shared with earlier stages
   /// The walk over [0, tmax].
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     const Query& q = work.query();
     const DirectionFrame<Query> directions(q);  // in round-to-nearest (the pairs kept apart are left out)
     const CGAL::Protect_FPU_rounding<true> upward;  // the walk switches back where it needs

@@ -69,8 +69,8 @@ std::optional<std::pair<Query, double>> unit_scaled(const Query& query, double d
 struct RigidUnitScalingStage {
   static constexpr pipeline::Counter counter = &StageCounters::exact;  ///< only when it answers exactly
   /// Scales work.query() and the question's d; undecided unless the scaling is inexact.
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     const auto scaled = unit_scaled(work.query(), work.question.params.min_distance);
     if (!scaled) return exact_outcome(work);  // an inexact scaling
     work.replacement() = scaled->first;

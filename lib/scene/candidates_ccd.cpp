@@ -206,15 +206,16 @@ struct CandidateSetRange {
 
   /// Reads candidates [begin, end) in order, each checked as it is read (indices and sides,
   /// then the box test, then shared indices), and calls visit(sides, k) for those whose boxes
-  /// overlap and, at d = 0, that the batched stage 1 does not exclude (CoplanarBlocks: visited
-  /// a block at a time); false at the first invalid candidate or when visit returns false.
+  /// overlap, at d = 0 visit(sides, k, resume) for those that the contact question's block
+  /// stages do not prove apart (CoplanarBlocks: visited a block at a time, resuming after the
+  /// block stages); false at the first invalid candidate or when visit returns false.
   template <class Visit>
   bool scan(std::size_t begin, std::size_t end, Visit&& visit) const {
     using Blocks = scene::CoplanarBlocks<std::size_t>;
     if (!Blocks::applies(params)) return scan_lists(begin, end, visit);
     const scene::PairTests<Vec3> tests(x0, x1, params);
     Blocks blocks(tests);
-    const auto add = [&](const PairSides& r, std::size_t k) { return blocks.add(r, k, visit); };
+    const auto add = [&](const PairSides& r, std::size_t k) { return blocks.add(r, k, visit); };  // visit(r, k, resume)
     return scan_lists(begin, end, add) && blocks.flush(visit);
   }
 

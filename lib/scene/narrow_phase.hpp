@@ -22,6 +22,7 @@
 #include "api/checked_query.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"
+#include "questions/contact_question.hpp"
 #include "scene/parallel.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scene/time_bounds.hpp"
@@ -98,14 +99,16 @@ class PairTests {
     throw std::logic_error("exactccd scene: a vertex-face pair in a 2D scene");
   }
 
-  /// The time of impact of a pair (std::nullopt: no collision in [0, tmax]).
-  std::optional<TimeInterval> toi(const PairSides& r) const {
-    return with_query(r, [&](const auto& q) { return answer_checked_query(q, params_, true); });
+  /// The time of impact of a pair (std::nullopt: no collision in [0, tmax]); `resume`: what the
+  /// contact question's block stages handed over for its 3D vertex-face or edge-edge query at
+  /// d = 0 (CoplanarBlocks), whose per-pair stages then resume after them, or null.
+  std::optional<TimeInterval> toi(const PairSides& r, const questions::ContactFindings* resume = nullptr) const {
+    return with_query(r, [&](const auto& q) { return answer(q, true, resume); });
   }
 
-  /// Whether a pair collides at all.
-  bool collides(const PairSides& r) const {
-    return with_query(r, [&](const auto& q) { return answer_checked_query(q, params_, false).has_value(); });
+  /// Whether a pair collides at all (`resume` as for toi).
+  bool collides(const PairSides& r, const questions::ContactFindings* resume = nullptr) const {
+    return with_query(r, [&](const auto& q) { return answer(q, false, resume).has_value(); });
   }
 
   /// Whether the boxes of the pair's two primitives over [0, tmax], grown by d, overlap: the
@@ -152,6 +155,16 @@ class PairTests {
   }
 
  private:
+  /// The answer to the question of query q: from the first stage, or after the block stages
+  /// whose handover is `resume`.
+  template <class Query>
+  std::optional<TimeInterval> answer(const Query& q, bool want_toi, const questions::ContactFindings* resume) const {
+    if constexpr (std::is_same_v<Query, VertexFaceQuery> || std::is_same_v<Query, EdgeEdgeQuery>) {
+      if (resume) return questions::contact_question_resumed(q, pipeline::Question{params_, want_toi}, *resume);
+    }
+    return answer_checked_query(q, params_, want_toi);
+  }
+
   /// The exact swept box over [0, 1] of a side's vertices (min and max of input coordinates).
   Box swept_box_of(const Side& side) const {
     const Vec3 p = lift(x0_[side.v[0]]), q = lift(x1_[side.v[0]]);
@@ -199,9 +212,9 @@ class CollectCollisions {
   CollectCollisions(const PairTests<Point>& tests, unsigned threads, bool boxes_checked)
       : tests_(tests), found_(worker_slots(threads)), boxes_checked_(boxes_checked) {}
 
-  bool operator()(const PairSides& r, const Id& id, unsigned worker) {
+  bool operator()(const PairSides& r, const Id& id, unsigned worker, const questions::ContactFindings* resume = nullptr) {
     if (!boxes_checked_ && !tests_.boxes_overlap(r)) return true;
-    if (const auto toi = tests_.toi(r)) found_[worker].value.emplace_back(id, *toi);
+    if (const auto toi = tests_.toi(r, resume)) found_[worker].value.emplace_back(id, *toi);
     return true;
   }
 
@@ -237,7 +250,7 @@ class EarliestCollision {
   // comes strictly later in the order `earlier`: skipping it cannot change the result, whichever
   // worker found what first.
   template <class Id>
-  bool operator()(const PairSides& r, const Id&, unsigned) {
+  bool operator()(const PairSides& r, const Id&, unsigned, const questions::ContactFindings* resume = nullptr) {
     // Cheapest first: boxes over [0, h] grown by d (h >= tmax: the broad phase's boxes over
     // [0, tmax]); whether the pair collides at all (a miss is mostly decided by the static
     // filter in ~20 ns); whether its points can be coplanar before h (interval arithmetic on
@@ -246,11 +259,11 @@ class EarliestCollision {
     const double h = bound_.load(std::memory_order_relaxed);
     if (h < tests_.params().tmax) {
       if (!tests_.may_touch_until(r, h)) return true;
-      if (!tests_.collides(r) || tests_.never_coplanar_until(r, h)) return true;
+      if (!tests_.collides(r, resume) || tests_.never_coplanar_until(r, h)) return true;
     } else if (!boxes_checked_ && !tests_.boxes_overlap(r)) {
       return true;
     }
-    const auto toi = tests_.toi(r);  // std::nullopt when the query does not collide
+    const auto toi = tests_.toi(r, resume);  // std::nullopt when the query does not collide
     if (!toi) return true;
     {
       // Found collisions are few (the window prunes the later ones): one lock each, no
@@ -284,10 +297,10 @@ class AnyCollision {
   AnyCollision(const PairTests<Point>& tests, bool boxes_checked) : tests_(tests), boxes_checked_(boxes_checked) {}
 
   template <class Id>
-  bool operator()(const PairSides& r, const Id&, unsigned) {
+  bool operator()(const PairSides& r, const Id&, unsigned, const questions::ContactFindings* resume = nullptr) {
     if (hit_.load(std::memory_order_relaxed)) return false;
     if (!boxes_checked_ && !tests_.boxes_overlap(r)) return true;
-    if (tests_.collides(r)) hit_ = true;
+    if (tests_.collides(r, resume)) hit_ = true;
     return !hit_.load(std::memory_order_relaxed);
   }
 
@@ -304,7 +317,7 @@ class AnyCollision {
 /// threads in chunks of kNarrowPhaseChunk, until it returns false. The range has size() and
 /// bool scan(begin, end, visit), which reads candidates [begin, end) in order, checks each as it
 /// is read and does the box test (so the question is asked with boxes_checked), calls
-/// visit(r, k) for the others, and returns false at an invalid candidate or when visit does. An
+/// visit(r, k) or visit(r, k, resume) (CoplanarBlocks' handover) for the others, and returns false at an invalid candidate or when visit does. An
 /// invalid candidate stops the loop. Returns true when every candidate was read and valid,
 /// false when the loop stopped early (a question's early exit or an invalid candidate: the
 /// caller then validates the whole range, so that bad input is reported, never answered).
@@ -312,7 +325,10 @@ template <class Range, class Question>
 bool decide_checked_range(const Range& range, unsigned threads, Question& question) {
   std::atomic<bool> stopped{false};
   parallel_chunks(range.size(), threads, kNarrowPhaseChunk, [&](std::size_t begin, std::size_t end, unsigned w) {
-    if (range.scan(begin, end, [&](const PairSides& r, std::size_t k) { return question(r, k, w); })) return true;
+    const auto visit = [&](const PairSides& r, std::size_t k, const questions::ContactFindings* resume = nullptr) {
+      return question(r, k, w, resume);
+    };
+    if (range.scan(begin, end, visit)) return true;
     stopped = true;
     return false;
   });

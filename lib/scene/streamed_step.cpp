@@ -71,8 +71,9 @@ template <class SceneT>
 using PointOf = typename decltype(SceneT::positions_t0)::value_type;
 
 /// Streams the trees' pairs, as sides, into the question (narrow_phase.hpp; every pair handed
-/// over has overlapping boxes), at d = 0 through each worker's CoplanarBlocks (the batched
-/// stage 1: the pairs it excludes have no contact).
+/// over has overlapping boxes), at d = 0 through each worker's CoplanarBlocks (the contact
+/// question's block stages: the pairs they prove apart have no contact; the others resume after
+/// them).
 template <class SceneT, class Question>
 void stream_into(const SceneT& scene, const SceneTrees& st, const PairTests<PointOf<SceneT>>& tests, unsigned threads,
                  Question& question, StepStats* stats) {
@@ -88,7 +89,9 @@ void stream_into(const SceneT& scene, const SceneTrees& st, const PairTests<Poin
           st.trees(), threads,
           [&](const std::vector<FoundPair>& batch, unsigned w) {
             CoplanarBlocks<FoundPair> blocks(tests);  // on this worker's stack: nothing allocated
-            const auto visit = [&](const PairSides& r, const FoundPair& p) { return question(r, p, w); };
+            const auto visit = [&](const PairSides& r, const FoundPair& p, const questions::ContactFindings* resume) {
+              return question(r, p, w, resume);
+            };
             for (const FoundPair& p : batch)
               if (!blocks.add(sides_of(scene, st.topology(), p), p, visit)) return false;
             return blocks.flush(visit);

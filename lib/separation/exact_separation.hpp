@@ -27,13 +27,13 @@ std::optional<TimeInterval> exact_toi(const RationalQuery& q, const RationalCcdP
                                       const kinds::FeatureMask& use = kinds::kAllFeatures);
 
 /// The exact path as the minimum-separation question's last stage (any kind, any d and tmax):
-/// always decides. Without the feature pairs the earlier stages proved apart (findings.use,
-/// from separation_walk.hpp's stage).
+/// always decides. Without the feature pairs the earlier stages proved apart (findings.use of
+/// SeparationFindings, from separation_walk.hpp's stage).
 struct ExactSeparationStage {
   static constexpr pipeline::Counter counter = &StageCounters::exact;  ///< counted as
   /// The exact answer and TOI.
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     const CcdParams& p = work.question.params;
     const auto toi = exact_toi(exact::to_rational(work.query()),
                                RationalCcdParams{mpq_class(p.min_distance), mpq_class(p.tmax)}, work.findings.use);

@@ -346,8 +346,8 @@ bool feature_separated(const ProjectionFrame<N>& frame, const kinds::Feature& f)
 struct SeparatingDirectionStage {
   static constexpr pipeline::Counter counter = &StageCounters::separating_direction;  ///< counted as
   /// Separate when a direction certifies it; else undecided.
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     if (separated_beyond(work.query(), work.question.params.min_distance)) return pipeline::Outcome::separate();
     return pipeline::Outcome::undecided();
   }

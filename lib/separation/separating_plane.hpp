@@ -95,8 +95,8 @@ bool separated_by_plane(const Query& q) {
 struct SeparatingPlaneStage {
   static constexpr pipeline::Counter counter = &StageCounters::separating_direction;  ///< counted as
   /// Separate when a plane of fixed normal separates the primitives at both ends; else undecided.
-  template <class Query>
-  pipeline::Outcome operator()(const pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(const pipeline::Work<Query, Findings>& work) const {
     if (separated_by_plane(work.query())) return pipeline::Outcome::separate();
     return pipeline::Outcome::undecided();
   }

@@ -68,7 +68,7 @@ class SeparationWalk {
   static constexpr std::size_t N = 2 * Kind::points;
   static_assert(Kind::features.size() <= std::tuple_size_v<kinds::FeatureMask>);
 
-  SeparationWalk(const std::array<Vec3, N>& x, const pipeline::Question& question, pipeline::Findings& findings)
+  SeparationWalk(const std::array<Vec3, N>& x, const pipeline::Question& question, SeparationFindings& findings)
       : x_(x), d_(question.params.min_distance), tmax_(question.params.tmax), want_toi_(question.want_toi),
         frame_(x, d_), findings_(findings) {}
 
@@ -84,7 +84,7 @@ class SeparationWalk {
   const double d_, tmax_;
   const bool want_toi_;
   const ProjectionFrame<N> frame_;
-  pipeline::Findings& findings_;
+  SeparationFindings& findings_;
   // Upward rounding (for Interval_nt) is installed when the terms are built: the directions
   // before that are certified in any rounding mode (separating_direction.hpp).
   std::optional<CGAL::Protect_FPU_rounding<true>> upward_;
@@ -243,18 +243,18 @@ class SeparationWalk {
 }  // namespace
 
 template <class Query>
-pipeline::Outcome separation_walk(const Query& q, const pipeline::Question& question, pipeline::Findings& findings) {
+pipeline::Outcome separation_walk(const Query& q, const pipeline::Question& question, SeparationFindings& findings) {
   using Kind = kinds::kind_of<Query>;
   return SeparationWalk<Kind>(contact::points3<double>(q), question, findings).run();
 }
 
 // The walk for every kind of the minimum-separation question (kinds::for_each_kind).
-template pipeline::Outcome separation_walk(const VertexFaceQuery&, const pipeline::Question&, pipeline::Findings&);
-template pipeline::Outcome separation_walk(const EdgeEdgeQuery&, const pipeline::Question&, pipeline::Findings&);
-template pipeline::Outcome separation_walk(const PointEdgeQuery&, const pipeline::Question&, pipeline::Findings&);
-template pipeline::Outcome separation_walk(const PointPointQuery&, const pipeline::Question&, pipeline::Findings&);
-template pipeline::Outcome separation_walk(const EdgeEdge2dQuery&, const pipeline::Question&, pipeline::Findings&);
-template pipeline::Outcome separation_walk(const PointEdge2dQuery&, const pipeline::Question&, pipeline::Findings&);
-template pipeline::Outcome separation_walk(const PointPoint2dQuery&, const pipeline::Question&, pipeline::Findings&);
+template pipeline::Outcome separation_walk(const VertexFaceQuery&, const pipeline::Question&, SeparationFindings&);
+template pipeline::Outcome separation_walk(const EdgeEdgeQuery&, const pipeline::Question&, SeparationFindings&);
+template pipeline::Outcome separation_walk(const PointEdgeQuery&, const pipeline::Question&, SeparationFindings&);
+template pipeline::Outcome separation_walk(const PointPointQuery&, const pipeline::Question&, SeparationFindings&);
+template pipeline::Outcome separation_walk(const EdgeEdge2dQuery&, const pipeline::Question&, SeparationFindings&);
+template pipeline::Outcome separation_walk(const PointEdge2dQuery&, const pipeline::Question&, SeparationFindings&);
+template pipeline::Outcome separation_walk(const PointPoint2dQuery&, const pipeline::Question&, SeparationFindings&);
 
 }  // namespace exactccd::separation

@@ -30,9 +30,19 @@
 #pragma once
 
 #include "exactccd/types.hpp"
+#include "kinds/primitive_kinds.hpp"
 #include "pipeline/outcome.hpp"
 
 namespace exactccd::separation {
+
+/// The minimum-separation question's findings: GMP use (written by the contact probe and the
+/// walk, read by the walk when it decides: counted `integer`) and the feature pairs no
+/// direction keeps apart (`use`: written by the walk, read by ExactSeparationStage, whose exact
+/// path leaves the others out: a pair a direction keeps farther than d apart over [0, 1] holds
+/// nowhere).
+struct SeparationFindings : pipeline::GmpUse {
+  kinds::FeatureMask use = kinds::kAllFeatures;  ///< the feature pairs not proven apart
+};
 
 /// The walk for a query of any kind (file comment; the question valid, checked by the entry
 /// point; round-to-nearest on entry: it installs upward rounding itself). Without want_toi only
@@ -40,15 +50,15 @@ namespace exactccd::separation {
 /// of the earliest time, not the tightest one. Hands over in `findings` the feature pairs a
 /// direction keeps apart (use) and whether an exact sign needed GMP (used_gmp).
 template <class Query>
-pipeline::Outcome separation_walk(const Query& q, const pipeline::Question& question, pipeline::Findings& findings);
+pipeline::Outcome separation_walk(const Query& q, const pipeline::Question& question, SeparationFindings& findings);
 
 /// The walk in the minimum-separation question's stage list; counted as `integer` when GMP was
 /// used on the way (an exact sign here, or the contact probe before it).
 struct SeparationWalkStage {
   static constexpr pipeline::Counter counter = &StageCounters::interval;  ///< counted as
   /// The walk on work.query().
-  template <class Query>
-  pipeline::Outcome operator()(pipeline::Work<Query>& work) const {
+  template <class Query, class Findings>
+  pipeline::Outcome operator()(pipeline::Work<Query, Findings>& work) const {
     return pipeline::counted_with_gmp(separation_walk(work.query(), work.question, work.findings), work.findings);
   }
 };

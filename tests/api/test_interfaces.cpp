@@ -221,6 +221,79 @@ TEST(CApi, EveryKindWithSeparationMatchesCore) {
   EXPECT_EQ(checked, kinds::kind_count() * 60);
 }
 
+// The batch entry points (answer_batch, exactccd_toi_batch: the stage lists on blocks of
+// queries) answer and count every query of every kind as the one-query entry point does, at d = 0
+// and d > 0, tmax 1 and 0.5, in batches that are not a whole number of blocks.
+TEST(Batch, EveryKindAnswersAndCountsAsOneQueryAtATime) {
+  int i = 0;
+  kinds::for_each_kind([&](auto k) {
+    using Query = typename decltype(k)::template Query<double>;
+    const std::vector<Query> queries = grid<Query>(70 + i, 75);
+    std::vector<double> flat;
+    for (const Query& q : queries) {
+      const std::vector<double> f = flat_any(q);
+      flat.insert(flat.end(), f.begin(), f.end());
+    }
+    for (const CcdParams p : {CcdParams{0.0, 1.0}, CcdParams{0.0, 0.5}, CcdParams{0.25, 1.0}, CcdParams{0.25, 0.5}}) {
+      for (const bool want_toi : {false, true}) {
+        StageCounters one, batch;
+        std::vector<std::optional<TimeInterval>> got(queries.size());
+        answer_batch(queries.data(), queries.size(), p, Method::filtered, want_toi, got.data(), &batch);
+        for (std::size_t j = 0; j < queries.size(); ++j)
+          EXPECT_EQ(got[j], answer_query(queries[j], p, Method::filtered, want_toi, &one)) << "kind " << i << ", query " << j;
+        EXPECT_EQ(batch.total(), one.total());
+        EXPECT_EQ(batch.volume_exclusion, one.volume_exclusion);
+        EXPECT_EQ(batch.interval, one.interval);
+        EXPECT_EQ(batch.toi_refined, one.toi_refined);
+      }
+      std::vector<int> collides(queries.size(), -1);
+      std::vector<double> lo(queries.size(), -1), hi(queries.size(), -1);
+      ASSERT_EQ(exactccd_toi_batch(i, flat.data(), queries.size(), p.min_distance, p.tmax, collides.data(), lo.data(),
+                                   hi.data()),
+                EXACTCCD_OK);
+      for (std::size_t j = 0; j < queries.size(); ++j) {
+        const auto t = toi(queries[j], p);
+        EXPECT_EQ(collides[j], t ? 1 : 0) << "kind " << i << ", query " << j;
+        if (t) {
+          EXPECT_EQ(lo[j], t->lo);
+          EXPECT_EQ(hi[j], t->hi);
+        }
+      }
+    }
+    ++i;
+  });
+}
+
+// A bad query anywhere in a batch is an error before anything is answered: the C++ entry point
+// names its index, the C one writes nothing.
+TEST(Batch, ABadQueryIsAnErrorBeforeAnyAnswer) {
+  std::vector<VertexFaceQuery> queries = grid<VertexFaceQuery>(5, 20);
+  queries[17].c_t1.y = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::optional<TimeInterval>> got(queries.size(), TimeInterval{-1, -1});
+  try {
+    answer_batch(queries.data(), queries.size(), CcdParams{}, Method::filtered, true, got.data());
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("query 17 of the batch"), std::string::npos) << e.what();
+  }
+  for (const auto& g : got) EXPECT_EQ(g, (TimeInterval{-1, -1}));
+  std::vector<double> doubles;
+  for (const auto& q : queries) {
+    const auto f = flat(q);
+    doubles.insert(doubles.end(), f.begin(), f.end());
+  }
+  std::vector<int> collides(queries.size(), -1);
+  EXPECT_EQ(exactccd_toi_batch(EXACTCCD_VERTEX_FACE, doubles.data(), queries.size(), 0, 1, collides.data(), nullptr,
+                               nullptr),
+            EXACTCCD_ERROR_NON_FINITE);
+  for (const int c : collides) EXPECT_EQ(c, -1);
+  double lo = 0;
+  EXPECT_EQ(exactccd_toi_batch(EXACTCCD_VERTEX_FACE, doubles.data(), 1, 0, 1, collides.data(), &lo, nullptr),
+            EXACTCCD_ERROR_NULL);
+  EXPECT_EQ(exactccd_toi_batch(EXACTCCD_VERTEX_FACE, nullptr, 0, 0, 1, nullptr, nullptr, nullptr), EXACTCCD_OK);
+  EXPECT_EQ(exactccd_toi_batch(7, doubles.data(), 1, 0, 1, collides.data(), nullptr, nullptr), EXACTCCD_ERROR_PARAMETER);
+}
+
 // The scene and candidate narrow phases' entry (api/checked_query.hpp: no per-query validation
 // or environment guard) answers as the public entry point, for every kind of the one list (a
 // kind missing from its instantiations in api/entry_point.cpp fails to link here), under the

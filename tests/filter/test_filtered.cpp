@@ -1130,7 +1130,7 @@ int run_each_stage_checking_environment(const TestQuery& q) {
     check("static predicates");
     (void)separation::separated_by_plane(query);
     check("separating plane");
-    pipeline::Findings findings;
+    filter::RootCells findings;
     if (q.kind == Kind::vertex_face)
       (void)filter::interval_stage(from_rows<VertexFaceQuery>(q.rows), true, findings);
     else

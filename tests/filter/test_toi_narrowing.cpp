@@ -69,7 +69,7 @@ template <class Query>
 void check_query(const Query& q, Tally& tally) {
   const std::optional<TimeInterval> exact = answer_query(q, CcdParams{}, Method::exact, true, nullptr);
   EXPECT_EQ(answer_query(q, CcdParams{}, Method::filtered, true, nullptr), exact);
-  pipeline::Findings findings;
+  filter::RootCells findings;
   (void)filter::interval_stage(q, true, findings);
   if (!findings.rule_toi_cell) return;
   ++tally.handed_over;
@@ -104,11 +104,11 @@ TEST(FactoredToi, EdgeEdgeEqualsExactTois) { check_queries<EdgeEdgeQuery>(Motion
 
 /// A query with a handed-over cell the stage narrows, and that cell.
 template <class Query>
-std::pair<Query, pipeline::RuleRootCell> certified_example(std::uint64_t seed) {
+std::pair<Query, filter::RuleRootCell> certified_example(std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   for (;;) {
     const Query q = from_rows<Query>(coplanar_rows(rng));
-    pipeline::Findings findings;
+    filter::RootCells findings;
     (void)filter::interval_stage(q, true, findings);
     if (findings.rule_toi_cell && filter::toi_in_rule_cell(q, *findings.rule_toi_cell))
       return {q, *findings.rule_toi_cell};
@@ -120,7 +120,7 @@ void check_wrong_cells(std::uint64_t seed) {
   const auto [q, cell] = certified_example<Query>(seed);
   const TimeInterval toi = *filter::toi_in_rule_cell(q, cell);
   ASSERT_LT(cell.lo, toi.lo) << "the example's root is not inside its cell";
-  pipeline::RuleRootCell wrong = cell;
+  filter::RuleRootCell wrong = cell;
   wrong.sign_at_lo = -cell.sign_at_lo;  // the signs at the ends contradict it
   EXPECT_FALSE(filter::toi_in_rule_cell(q, wrong));
   wrong = cell;
@@ -130,7 +130,7 @@ void check_wrong_cells(std::uint64_t seed) {
   wrong.later_from = toi.lo;  // another candidate may hold before the root
   EXPECT_FALSE(filter::toi_in_rule_cell(q, wrong));
   wrong = cell;
-  wrong.poly = pipeline::RulePoly{(cell.poly.in_plane + 1) % 10};  // another polynomial's signs
+  wrong.poly = filter::RulePoly{(cell.poly.in_plane + 1) % 10};  // another polynomial's signs
   const std::optional<TimeInterval> other = filter::toi_in_rule_cell(q, wrong);
   EXPECT_TRUE(!other || !(*other == toi)) << "another polynomial gave the same TOI";
 }
@@ -145,7 +145,7 @@ TimeInterval tightest(const mpq_class& r) {
   return {d, std::nextafter(d, std::numeric_limits<double>::infinity())};
 }
 
-/// A linear factor of V (pipeline::RulePoly naming a coordinate of a relative motion, as the
+/// A linear factor of V (filter::RulePoly naming a coordinate of a relative motion, as the
 /// factored view hands over): its root in (0, 1), the exact rational d0 / (d0 - d1) of the
 /// exact differences, narrowed to the tightest double interval.
 TEST(FactoredToi, LinearFactorRootIsTightest) {
@@ -158,7 +158,7 @@ TEST(FactoredToi, LinearFactorRootIsTightest) {
     const mpq_class d0 = mpq_class(r[to].x) - mpq_class(r[from].x);
     const mpq_class d1 = mpq_class(r[to + 4].x) - mpq_class(r[from + 4].x);
     if (sgn(d0) * sgn(d1) >= 0) continue;  // no root in (0, 1)
-    const pipeline::RuleRootCell cell{0.0, 1.0, sgn(d0), pipeline::RulePoly{-1, from, to, 0},
+    const filter::RuleRootCell cell{0.0, 1.0, sgn(d0), filter::RulePoly{-1, from, to, 0},
                                       std::numeric_limits<double>::infinity()};
     const std::optional<TimeInterval> toi = filter::toi_in_rule_cell(q, cell);
     ASSERT_TRUE(toi) << "query " << i;

@@ -20,7 +20,7 @@ struct Scripted {
   Outcome outcome;
   std::vector<int>* log;
   int id;
-  Outcome operator()(Work<VertexFaceQuery>& work) const {
+  Outcome operator()(Work<VertexFaceQuery, GmpUse>& work) const {
     log->push_back(work.collides ? -id : id);
     return outcome;
   }
@@ -40,7 +40,7 @@ const TimeInterval kToi{0.25, 0.25};
 TEST(RunStages, TheFirstDecidingStageAnswersAndIsCounted) {
   std::vector<int> log;
   StageCounters counters;
-  Work<VertexFaceQuery> work(kQuery, Question{{}, true}, &counters);
+  Work<VertexFaceQuery, GmpUse> work(kQuery, Question{{}, true}, &counters);
   const auto answer = run_stages(work, Scripted{Outcome::undecided(), &log, 1}, ScriptedExact{Outcome::collides(kToi), &log, 2},
                                  Scripted{Outcome::separate(), &log, 3});
   ASSERT_TRUE(answer);
@@ -54,9 +54,9 @@ TEST(RunStages, TheFirstDecidingStageAnswersAndIsCounted) {
 TEST(RunStages, SeparateIsNoCollisionAndAnswerAloneGivesThePlaceholder) {
   std::vector<int> log;
   StageCounters counters;
-  Work<VertexFaceQuery> apart(kQuery, Question{}, &counters);
+  Work<VertexFaceQuery, GmpUse> apart(kQuery, Question{}, &counters);
   EXPECT_FALSE(run_stages(apart, Scripted{Outcome::separate(), &log, 1}));
-  Work<VertexFaceQuery> hit(kQuery, Question{}, &counters);  // the TOI not asked
+  Work<VertexFaceQuery, GmpUse> hit(kQuery, Question{}, &counters);  // the TOI not asked
   const auto answer = run_stages(hit, Scripted{Outcome::collides(), &log, 1});
   ASSERT_TRUE(answer);
   EXPECT_EQ(*answer, kCollisionWithoutToi);
@@ -67,7 +67,7 @@ TEST(RunStages, SeparateIsNoCollisionAndAnswerAloneGivesThePlaceholder) {
 TEST(RunStages, ACollisionWithoutItsToiIsNarrowedByTheLaterStages) {
   std::vector<int> log;
   StageCounters counters;
-  Work<VertexFaceQuery> work(kQuery, Question{{}, true}, &counters);
+  Work<VertexFaceQuery, GmpUse> work(kQuery, Question{{}, true}, &counters);
   const auto answer = run_stages(work, Scripted{Outcome::collides(), &log, 1}, Scripted{Outcome::undecided(), &log, 2},
                                  ScriptedExact{Outcome::collides(kToi), &log, 3});
   ASSERT_TRUE(answer);
@@ -85,37 +85,37 @@ TEST(RunStages, TheOutcomeNamesItsCounterAndSelfCountingStagesAreNotCounted) {
   StageCounters counters;
   Outcome with_gmp = Outcome::separate();
   with_gmp.counted_as = &StageCounters::integer;
-  Work<VertexFaceQuery> named(kQuery, Question{}, &counters);
+  Work<VertexFaceQuery, GmpUse> named(kQuery, Question{}, &counters);
   EXPECT_FALSE(run_stages(named, Scripted{with_gmp, &log, 1}));
   EXPECT_EQ(counters.integer, 1u);
   EXPECT_EQ(counters.interval, 0u);
-  Work<VertexFaceQuery> nested(kQuery, Question{}, &counters);
+  Work<VertexFaceQuery, GmpUse> nested(kQuery, Question{}, &counters);
   EXPECT_FALSE(run_stages(nested, ScriptedSelfCounting{Outcome::separate(), &log, 2}));
   EXPECT_EQ(counters.total(), 1u);
-  Work<VertexFaceQuery> uncounted(kQuery, Question{}, nullptr);  // counters may be null
+  Work<VertexFaceQuery, GmpUse> uncounted(kQuery, Question{}, nullptr);  // counters may be null
   EXPECT_FALSE(run_stages(uncounted, Scripted{Outcome::separate(), &log, 3}));
 }
 
 TEST(RunStages, NoDecidingStageIsAnErrorNotAnAnswer) {
   std::vector<int> log;
-  Work<VertexFaceQuery> work(kQuery, Question{}, nullptr);
+  Work<VertexFaceQuery, GmpUse> work(kQuery, Question{}, nullptr);
   EXPECT_THROW(run_stages(work, Scripted{Outcome::undecided(), &log, 1}), std::logic_error);
-  Work<VertexFaceQuery> toi(kQuery, Question{{}, true}, nullptr);  // a collision whose TOI nobody finds
+  Work<VertexFaceQuery, GmpUse> toi(kQuery, Question{{}, true}, nullptr);  // a collision whose TOI nobody finds
   EXPECT_THROW(run_stages(toi, Scripted{Outcome::collides(), &log, 1}), std::logic_error);
 }
 
 TEST(RunNestedStages, ANestedListMayLeaveTheQueryUndecided) {
   std::vector<int> log;
   StageCounters counters;
-  Work<VertexFaceQuery> work(kQuery, Question{}, &counters);
+  Work<VertexFaceQuery, GmpUse> work(kQuery, Question{}, &counters);
   EXPECT_EQ(run_nested_stages(work, Scripted{Outcome::undecided(), &log, 1}).answer, Outcome::Answer::undecided);
   EXPECT_EQ(counters.total(), 0u);
-  Work<VertexFaceQuery> hit(kQuery, Question{}, &counters);
+  Work<VertexFaceQuery, GmpUse> hit(kQuery, Question{}, &counters);
   const Outcome o = run_nested_stages(hit, Scripted{Outcome::undecided(), &log, 2}, Scripted{Outcome::collides(kToi), &log, 3});
   ASSERT_EQ(o.answer, Outcome::Answer::collides);
   EXPECT_EQ(*o.toi, kToi);
   EXPECT_EQ(counters.interval, 1u);
-  Work<VertexFaceQuery> apart(kQuery, Question{}, &counters);
+  Work<VertexFaceQuery, GmpUse> apart(kQuery, Question{}, &counters);
   EXPECT_EQ(run_nested_stages(apart, Scripted{Outcome::separate(), &log, 4}).answer, Outcome::Answer::separate);
 }
 
@@ -125,7 +125,7 @@ struct ScriptedContact {
   Outcome touch;
   bool gmp = false;
   Question* asked = nullptr;
-  Outcome operator()(const VertexFaceQuery&, const Question& question, StageCounters* counters, Findings& found) const {
+  Outcome operator()(const VertexFaceQuery&, const Question& question, StageCounters* counters, GmpUse& found) const {
     *asked = question;
     found.used_gmp = gmp;
     if (touch.answer != Outcome::Answer::undecided && counters) ++counters->interval;
@@ -136,7 +136,7 @@ struct ScriptedContact {
 TEST(ContactProbe, ACollisionEnclosesTheEarliestTimeAndIsCountedWhereTheContactQuestionDecided) {
   StageCounters counters;
   Question asked;
-  Work<VertexFaceQuery> work(kQuery, Question{{0.125, 0.5}, false}, &counters);
+  Work<VertexFaceQuery, GmpUse> work(kQuery, Question{{0.125, 0.5}, false}, &counters);
   const Outcome o = contact_probe(ScriptedContact{Outcome::collides(TimeInterval{0.25, 0.375}), false, &asked})(work);
   ASSERT_EQ(o.answer, Outcome::Answer::collides);
   EXPECT_EQ(*o.toi, (TimeInterval{0.0, 0.375}));  // touching at t0 is within d at t0: [0, hi] holds the earliest time
@@ -151,15 +151,15 @@ TEST(ContactProbe, OtherwiseItCountsNothingAndHandsOverGmpUse) {
   StageCounters counters;
   Question asked;
   for (const Outcome& touch : {Outcome::separate(), Outcome::undecided()}) {
-    Work<VertexFaceQuery> work(kQuery, Question{{0.125, 1.0}, false}, &counters);
+    Work<VertexFaceQuery, GmpUse> work(kQuery, Question{{0.125, 1.0}, false}, &counters);
     EXPECT_EQ(contact_probe(ScriptedContact{touch, true, &asked})(work).answer, Outcome::Answer::undecided);
     EXPECT_TRUE(work.findings.used_gmp);
-    Work<VertexFaceQuery> without(kQuery, Question{{0.125, 1.0}, false}, &counters);
+    Work<VertexFaceQuery, GmpUse> without(kQuery, Question{{0.125, 1.0}, false}, &counters);
     (void)contact_probe(ScriptedContact{touch, false, &asked})(without);
     EXPECT_FALSE(without.findings.used_gmp);
   }
   EXPECT_EQ(counters.total(), 0u);
-  Work<VertexFaceQuery> toi(kQuery, Question{{0.125, 1.0}, true}, &counters);  // the TOI asked: no probe
+  Work<VertexFaceQuery, GmpUse> toi(kQuery, Question{{0.125, 1.0}, true}, &counters);  // the TOI asked: no probe
   asked = Question{{-1.0, -1.0}, true};
   EXPECT_EQ(contact_probe(ScriptedContact{Outcome::collides(kToi), false, &asked})(toi).answer, Outcome::Answer::undecided);
   EXPECT_EQ(asked.params.tmax, -1.0);  // not asked

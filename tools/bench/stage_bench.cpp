@@ -60,7 +60,7 @@ void BM_IntervalStage(benchmark::State& state) {
   VertexFaceQuery q = kHit;
   for (auto _ : state) {
     benchmark::DoNotOptimize(q);
-    exactccd::pipeline::Findings findings;
+    exactccd::filter::RootCells findings;
     benchmark::DoNotOptimize(exactccd::filter::interval_stage(q, false, findings));
   }
 }

@@ -134,11 +134,14 @@ std::vector<typename Motion::Dataset> load_files(const ParsedOptions& options, c
 template <class Motion>
 Totals check_file(const typename Motion::Dataset& d, std::size_t begin, std::size_t end, const CheckSettings& s,
                   std::string& json_items) {
-  std::vector<StageCounters> counters(end - begin);  // one per query: no shared counter
+  constexpr std::size_t chunk = 64;  // queries answered together (answer_range: blocks of lanes)
+  const std::size_t chunks = (end - begin + chunk - 1) / chunk;
+  std::vector<StageCounters> counters(chunks);  // one per chunk: no shared counter
   std::vector<std::optional<TimeInterval>> result(end - begin);
   const double start = now_seconds();
-  parallel_for(begin, end, s.batch.threads, [&](std::size_t i) {
-    result[i - begin] = Motion::answer(d, i, s.method, &counters[i - begin], s.want_toi, s.params);
+  parallel_for(0, chunks, s.batch.threads, [&](std::size_t c) {
+    const std::size_t first = begin + c * chunk, last = std::min(end, first + chunk);
+    Motion::answer_range(d, first, last, s.method, counters[c], s.want_toi, s.params, result.data() + (first - begin));
   }, "check");
   Totals t;
   t.seconds = now_seconds() - start;

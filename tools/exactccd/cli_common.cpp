@@ -256,6 +256,30 @@ std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Me
   });
 }
 
+void run_query_range(const Dataset& d, std::size_t begin, std::size_t end, tools::Method method,
+                     StageCounters& counters, bool want_toi, const CcdParams& params, std::optional<TimeInterval>* out) {
+  if (method != tools::Method::filtered) {
+    for (std::size_t i = begin; i < end; ++i) out[i - begin] = run_query(d, i, method, &counters, want_toi, params);
+    return;
+  }
+  visit_kind(d.kind, [&](auto kind) {
+    using DoubleQuery = typename decltype(kind)::template Query<double>;
+    std::vector<DoubleQuery> queries;  // the queries in doubles, to the batch entry point
+    std::vector<std::size_t> at;       // where each one's answer goes
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!d.doubles[i]) {  // not doubles: run_query's rational path
+        out[i - begin] = run_query(d, i, method, &counters, want_toi, params);
+        continue;
+      }
+      queries.push_back(io::query_from_rows<DoubleQuery>(*d.doubles[i]));
+      at.push_back(i - begin);
+    }
+    std::vector<std::optional<TimeInterval>> answers(queries.size());
+    answer_batch(queries.data(), queries.size(), params, Method::filtered, want_toi, answers.data(), &counters);
+    for (std::size_t k = 0; k < at.size(); ++k) out[at[k]] = answers[k];
+  });
+}
+
 void require_method_answers(tools::Method method, QueryKind kind, const CcdParams& params) {
   if (tools::is_exact_method(method)) return;
   if (!is_contact_kind_at(kind))

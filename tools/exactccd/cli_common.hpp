@@ -196,6 +196,12 @@ void print_check_row(const CheckRecord& rec, bool stages_line, const CcdParams& 
 std::optional<TimeInterval> run_query(const Dataset& d, std::size_t i, tools::Method method,
                                       StageCounters* counters, bool want_toi, const CcdParams& params = {});
 
+/// run_query for queries [begin, end) of d into out[0, end - begin), counted in `counters`: by
+/// the library's batch entry point (answer_batch: the stage lists on blocks of queries) for the
+/// filtered method's queries in doubles, query by query for the others.
+void run_query_range(const Dataset& d, std::size_t begin, std::size_t end, tools::Method method,
+                     StageCounters& counters, bool want_toi, const CcdParams& params, std::optional<TimeInterval>* out);
+
 /// Throws UsageError when `method` (a baseline) cannot answer the kind or the question: the
 /// baselines answer only vertex-face and edge-edge with the default CcdParams.
 void require_method_answers(tools::Method method, QueryKind kind, const CcdParams& params);

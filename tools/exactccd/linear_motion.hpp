@@ -37,6 +37,12 @@ struct LinearMotion {
                                             StageCounters* counters, bool want_toi, const CcdParams& params) {
     return run_query(d, i, method, counters, want_toi, params);
   }
+  /// run_query_range (cli_common.hpp): the filtered method through the batch entry point.
+  static void answer_range(const Dataset& d, std::size_t begin, std::size_t end, tools::Method method,
+                           StageCounters& counters, bool want_toi, const CcdParams& params,
+                           std::optional<TimeInterval>* out) {
+    run_query_range(d, begin, end, method, counters, want_toi, params, out);
+  }
   /// No "motion" key in check --json (the records of linear files predate the key).
   static constexpr const char* record_motion = nullptr;
   /// Every stage of the linear filtered method.

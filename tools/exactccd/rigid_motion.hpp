@@ -42,6 +42,12 @@ struct RigidMotion {
   /// when want_toi, else any enclosure on collision.
   static std::optional<TimeInterval> answer(const Dataset& d, std::size_t i, tools::Method method,
                                             StageCounters* counters, bool want_toi, const CcdParams& params);
+  /// answer for queries [begin, end) into out[0, end - begin), one by one.
+  static void answer_range(const Dataset& d, std::size_t begin, std::size_t end, tools::Method method,
+                           StageCounters& counters, bool want_toi, const CcdParams& params,
+                           std::optional<TimeInterval>* out) {
+    for (std::size_t i = begin; i < end; ++i) out[i - begin] = answer(d, i, method, &counters, want_toi, params);
+  }
   /// check --json's "motion": "rigid".
   static constexpr const char* record_motion = "rigid";
   /// The stages of the rigid filtered method.

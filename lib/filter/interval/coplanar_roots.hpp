@@ -15,6 +15,7 @@
 
 #include "filter/interval/in_plane_over_cell.hpp"
 #include "filter/interval/isolation.hpp"
+#include "filter/root_cells.hpp"
 #include "pipeline/outcome.hpp"
 
 namespace exactccd::filter::interval {
@@ -46,7 +47,7 @@ class CoplanarCandidates {
       const TimeInterval t{cell.lo, cell.hi};
       if (!earliest_contact_ || t.lo < earliest_contact_->lo || (t.lo == earliest_contact_->lo && t.hi < earliest_contact_->hi)) {
         earliest_contact_ = t;
-        earliest_cell_ = pipeline::RuleRootCell{cell.lo, cell.hi, cell.sign_at_lo, pipeline::RulePoly{poly}, kInf};
+        earliest_cell_ = RuleRootCell{cell.lo, cell.hi, cell.sign_at_lo, RulePoly{poly}, kInf};
         earliest_start_ = starts_.size() - 1;
       }
     }
@@ -68,7 +69,7 @@ class CoplanarCandidates {
 
   /// The stage's outcome once every candidate is examined; with want_toi, a collision whose
   /// TOI is not certain here may hand over its root cell in `toi_cell`.
-  pipeline::Outcome outcome(bool want_toi, std::optional<pipeline::RuleRootCell>& toi_cell) const {
+  pipeline::Outcome outcome(bool want_toi, std::optional<RuleRootCell>& toi_cell) const {
     if (failed_) return pipeline::Outcome::undecided();
     if (!earliest_contact_) return uncertain_ ? pipeline::Outcome::undecided() : pipeline::Outcome::separate();
     pipeline::Outcome r = pipeline::Outcome::collides();
@@ -84,7 +85,7 @@ class CoplanarCandidates {
     // starting at s >= later_from, so r >= s >= later_from (r = s for a point cell, r > s for
     // an open one): when t* <= later_from, no candidate before t* can hold, and t* is the TOI
     // (the candidate argument: the earliest contact is a candidate where the rule holds).
-    pipeline::RuleRootCell cell = earliest_cell_;
+    RuleRootCell cell = earliest_cell_;
     for (std::size_t i = 0; i < starts_.size(); ++i)
       if (i != earliest_start_) cell.later_from = std::min(cell.later_from, starts_[i]);
     if (cell.later_from > cell.lo) toi_cell = cell;  // else some other candidate may be earlier
@@ -98,7 +99,7 @@ class CoplanarCandidates {
   const Polys& P_;
   bool failed_ = false, uncertain_ = false;
   std::optional<TimeInterval> earliest_contact_;  // among decided candidates
-  pipeline::RuleRootCell earliest_cell_;          // its root cell (when not a point)
+  RuleRootCell earliest_cell_;          // its root cell (when not a point)
   double earliest_undecided_ = kInf;              // the smallest lo of an undecided cell
   // The starts of every contact or undecided cell (at most 2 ends and the roots of 3 + 4 + 16
   // polynomials), and the earliest contact's position among them.
@@ -108,7 +109,7 @@ class CoplanarCandidates {
 
 /// The stage when V vanishes identically: see the file comment.
 template <class Polys>
-pipeline::Outcome coplanar_strategy(const Polys& P, bool want_toi, std::optional<pipeline::RuleRootCell>& toi_cell) {
+pipeline::Outcome coplanar_strategy(const Polys& P, bool want_toi, std::optional<RuleRootCell>& toi_cell) {
   // First the rule over all of [0, 1] at once: a sign certified over the whole interval holds
   // at every t in it, so a certain answer is the answer at every t (a certain contact holds at
   // t = 0: the TOI is exactly 0). This decides static and slowly moving coplanar pairs whose

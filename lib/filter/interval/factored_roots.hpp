@@ -22,6 +22,7 @@
 
 #include "filter/interval/in_plane_over_cell.hpp"
 #include "filter/interval/isolation.hpp"
+#include "filter/root_cells.hpp"
 #include "filter/interval/narrowing.hpp"
 #include "pipeline/outcome.hpp"
 
@@ -110,7 +111,7 @@ inline int only_nonzero_component(const std::array<const contact::Poly<Interval,
 /// them, so every other candidate that may hold is after it (later_from = +inf).
 template <class Polys, class Rows>
 pipeline::Outcome factored_by_test(const Polys& P, const Rows& r, const SegmentTest& test, bool want_toi,
-                                   bool& applies, std::optional<pipeline::RuleRootCell>& toi_cell) {
+                                   bool& applies, std::optional<RuleRootCell>& toi_cell) {
   const auto& cross = segment_test(P, test.index).cross;
   const int k = only_nonzero_component({&cross.x, &cross.y, &cross.z});
   applies = false;
@@ -136,10 +137,10 @@ pipeline::Outcome factored_by_test(const Polys& P, const Rows& r, const SegmentT
           return true;
         // g = C_k is the in-plane polynomial of index first_degenerate + 4 test + k
         // (contact::for_each_degenerate_poly); f is coordinate k of the motion X -> W.
-        const pipeline::RulePoly poly = c.factor == 1
-            ? pipeline::RulePoly{contact::first_degenerate_poly(P) + 4 * test.index + k}
-            : pipeline::RulePoly{-1, test.x, test.w, k};
-        toi_cell = pipeline::RuleRootCell{c.cell.lo, c.cell.hi, c.cell.sign_at_lo, poly, kInf};
+        const RulePoly poly = c.factor == 1
+            ? RulePoly{contact::first_degenerate_poly(P) + 4 * test.index + k}
+            : RulePoly{-1, test.x, test.w, k};
+        toi_cell = RuleRootCell{c.cell.lo, c.cell.hi, c.cell.sign_at_lo, poly, kInf};
         return false;
       });
 }
@@ -148,7 +149,7 @@ pipeline::Outcome factored_by_test(const Polys& P, const Rows& r, const SegmentT
 /// collision's root cell may be handed over in `toi_cell` (factored_by_test).
 template <class Polys, class IntervalQuery>
 pipeline::Outcome factored_strategy(const Polys& P, const IntervalQuery& q, bool want_toi,
-                                    std::optional<pipeline::RuleRootCell>& toi_cell) {
+                                    std::optional<RuleRootCell>& toi_cell) {
   const auto r = rows(q);
   const auto tests = [] {
     if constexpr (contact::is_vertex_face_polys<Polys>::value) return kVertexFaceTests; else return kEdgeEdgeTests;

@@ -7,6 +7,7 @@
 
 #include "filter/interval/in_plane_over_cell.hpp"
 #include "filter/interval/isolation.hpp"
+#include "filter/root_cells.hpp"
 #include "filter/interval/narrowing.hpp"
 #include "pipeline/outcome.hpp"
 
@@ -28,7 +29,7 @@ contact::Truth verdict_at_root(const Polys& P, const Ends& ends, RootCell& cell)
 /// stage narrows it exactly); it is the TOI only if no earlier root is undecided.
 template <class Polys, class Ends>
 pipeline::Outcome moving_strategy(const Polys& P, const Ends& ends, bool want_toi,
-                                  std::optional<pipeline::VolumeRootCell>& toi_cell) {
+                                  std::optional<VolumeRootCell>& toi_cell) {
   RootCells cells;
   if (isolate_roots(P.volume(), cells, true, [&](int end) { return ends.volume_sign(end); }) == Isolation::failed ||
       cells.size() > 3)
@@ -43,7 +44,7 @@ pipeline::Outcome moving_strategy(const Polys& P, const Ends& ends, bool want_to
       if (narrow(P.volume(), cell, kToiHalvings) == Narrowing::done)
         r.toi = TimeInterval{cell.lo, cell.hi};
       else if (!cell.is_point())
-        toi_cell = pipeline::VolumeRootCell{cell.lo, cell.hi, cell.sign_at_lo};
+        toi_cell = VolumeRootCell{cell.lo, cell.hi, cell.sign_at_lo};
     }
     return r;
   }
