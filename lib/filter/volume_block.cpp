@@ -16,53 +16,37 @@ struct VerdictLanes {
   alignas(64) std::array<double, kLanes> out_of_range;
 };
 
-/// The groups of every lane, one after the other: the per-query stage's function on each lane,
-/// a loop of the same operations on every lane that the compiler turns into vector instructions
-/// of the caller's target.
+/// The groups and the verdict of every lane, one lane after the other: the per-query stage's
+/// functions on each lane (volume_groups_of, stage_one_verdict), a loop of the same operations
+/// on every lane that the compiler turns into vector instructions of the caller's target. It
+/// writes to locals (copied out after it), which the compiler knows alias none of the lanes it
+/// reads: written straight to the caller's arrays, the stores could alias the lanes, and the
+/// run-time alias checks that would need exceed GCC's limit (the loop was not vectorized:
+/// filter.simd_registers). The groups are copied out only when asked (the tests' view of the
+/// stage's intermediate values); the stage itself needs the verdicts.
 template <class Query>
-[[gnu::always_inline]] inline void groups_body(const pipeline::QueryLanes<Query>& b, VolumeGroupLanes& out) {
+[[gnu::always_inline]] inline void block_body(const pipeline::QueryLanes<Query>& b, VolumeGroupLanes* groups_out,
+                                              VerdictLanes& verdicts_out) {
+  VolumeGroupLanes groups;
+  VerdictLanes verdicts;
   for (std::size_t i = 0; i < kLanes; ++i) {
     const auto row = [&](int r) {
       const auto& c = b.coordinate[static_cast<std::size_t>(r)];
       return Vec3{c[0][i], c[1][i], c[2][i]};
     };
     const VolumeGroups g = volume_groups_of<kinds::kind_of<Query>>(row);
-    out.threshold[i] = g.threshold;
+    groups.threshold[i] = g.threshold;
     for (std::size_t m = 0; m < 4; ++m) {
-      out.sum[m][i] = g.sum[m];
-      out.permanent[m][i] = g.permanent[m];
+      groups.sum[m][i] = g.sum[m];
+      groups.permanent[m][i] = g.permanent[m];
     }
-  }
-}
-
-/// The verdict of every lane from its groups (stage_one_verdict per lane).
-[[gnu::always_inline]] inline void verdict_body(const VolumeGroupLanes& g, VerdictLanes& out) {
-  for (std::size_t i = 0; i < kLanes; ++i) {
-    const VolumeGroups lane{g.threshold[i],
-                            {g.sum[0][i], g.sum[1][i], g.sum[2][i], g.sum[3][i]},
-                            {g.permanent[0][i], g.permanent[1][i], g.permanent[2][i], g.permanent[3][i]}};
     bool excluded = false, out_of_range = false;
-    stage_one_verdict(lane, excluded, out_of_range);
-    out.excluded[i] = excluded ? 1.0 : 0.0;
-    out.out_of_range[i] = out_of_range ? 1.0 : 0.0;
+    stage_one_verdict(g, excluded, out_of_range);
+    verdicts.excluded[i] = excluded ? 1.0 : 0.0;
+    verdicts.out_of_range[i] = out_of_range ? 1.0 : 0.0;
   }
-}
-
-/// Both loops: the groups, then the verdicts. Each loop writes to a local of its own (copied
-/// out after it), which the compiler knows aliases none of its inputs: written straight to the
-/// caller's arrays, the stores could alias the lanes read, and the run-time alias checks that
-/// would need exceed GCC's limit (the loops were not vectorized: filter.simd_registers).
-template <class Query>
-[[gnu::always_inline]] inline void block_body(const pipeline::QueryLanes<Query>& b, VolumeGroupLanes& g,
-                                              VerdictLanes* verdicts) {
-  VolumeGroupLanes groups;
-  groups_body(b, groups);
-  if (verdicts) {
-    VerdictLanes v;
-    verdict_body(groups, v);
-    *verdicts = v;
-  }
-  g = groups;
+  verdicts_out = verdicts;
+  if (groups_out) *groups_out = groups;
 }
 
 // One function per level and kind: the same body, compiled for that instruction set (flatten:
@@ -70,54 +54,54 @@ template <class Query>
 // simd_registers check reads their code: the AVX-512 ones use zmm registers, the AVX2 ones ymm.
 using VertexFaceLanes = pipeline::QueryLanes<VertexFaceQuery>;
 using EdgeEdgeLanes = pipeline::QueryLanes<EdgeEdgeQuery>;
-__attribute__((flatten, noinline)) void baseline(const VertexFaceLanes& b, VolumeGroupLanes& g, VerdictLanes* v) {
+__attribute__((flatten, noinline)) void baseline(const VertexFaceLanes& b, VolumeGroupLanes* g, VerdictLanes& v) {
   block_body(b, g, v);
 }
-__attribute__((flatten, noinline)) void baseline(const EdgeEdgeLanes& b, VolumeGroupLanes& g, VerdictLanes* v) {
+__attribute__((flatten, noinline)) void baseline(const EdgeEdgeLanes& b, VolumeGroupLanes* g, VerdictLanes& v) {
   block_body(b, g, v);
 }
 #if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((flatten, noinline, target("avx2"))) void avx2(const VertexFaceLanes& b, VolumeGroupLanes& g,
-                                                             VerdictLanes* v) {
+__attribute__((flatten, noinline, target("avx2"))) void avx2(const VertexFaceLanes& b, VolumeGroupLanes* g,
+                                                             VerdictLanes& v) {
   block_body(b, g, v);
 }
-__attribute__((flatten, noinline, target("avx2"))) void avx2(const EdgeEdgeLanes& b, VolumeGroupLanes& g,
-                                                             VerdictLanes* v) {
+__attribute__((flatten, noinline, target("avx2"))) void avx2(const EdgeEdgeLanes& b, VolumeGroupLanes* g,
+                                                             VerdictLanes& v) {
   block_body(b, g, v);
 }
-__attribute__((flatten, noinline, target("avx512f"))) void avx512(const VertexFaceLanes& b, VolumeGroupLanes& g,
-                                                                  VerdictLanes* v) {
+__attribute__((flatten, noinline, target("avx512f"))) void avx512(const VertexFaceLanes& b, VolumeGroupLanes* g,
+                                                                  VerdictLanes& v) {
   block_body(b, g, v);
 }
-__attribute__((flatten, noinline, target("avx512f"))) void avx512(const EdgeEdgeLanes& b, VolumeGroupLanes& g,
-                                                                  VerdictLanes* v) {
+__attribute__((flatten, noinline, target("avx512f"))) void avx512(const EdgeEdgeLanes& b, VolumeGroupLanes* g,
+                                                                  VerdictLanes& v) {
   block_body(b, g, v);
 }
 #endif
 
-/// The block's groups (and verdicts, when `verdicts` is not null) at `level`.
+/// The block's verdicts (and groups, when `groups` is not null) at `level`.
 template <class Query>
-void run_at(const pipeline::QueryLanes<Query>& lanes, numeric::SimdLevel level, VolumeGroupLanes& g,
-            VerdictLanes* verdicts) {
+void run_at(const pipeline::QueryLanes<Query>& lanes, numeric::SimdLevel level, VolumeGroupLanes* groups,
+            VerdictLanes& verdicts) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  if (level == numeric::SimdLevel::avx512) return avx512(lanes, g, verdicts);
-  if (level == numeric::SimdLevel::avx2) return avx2(lanes, g, verdicts);
+  if (level == numeric::SimdLevel::avx512) return avx512(lanes, groups, verdicts);
+  if (level == numeric::SimdLevel::avx2) return avx2(lanes, groups, verdicts);
 #endif
-  baseline(lanes, g, verdicts);
+  baseline(lanes, groups, verdicts);
 }
 
 }  // namespace
 
 template <class Query>
 void volume_groups_block(const pipeline::QueryLanes<Query>& lanes, numeric::SimdLevel level, VolumeGroupLanes& out) {
-  run_at(lanes, level, out, nullptr);
+  VerdictLanes unused;
+  run_at(lanes, level, &out, unused);
 }
 
 template <class Query>
 VolumeLaneVerdicts volume_exclusion_block(const pipeline::QueryLanes<Query>& lanes, numeric::SimdLevel level) {
-  VolumeGroupLanes g;
   VerdictLanes v;
-  run_at(lanes, level, g, &v);
+  run_at(lanes, level, nullptr, v);
   VolumeLaneVerdicts mask;
   for (std::size_t i = 0; i < lanes.size; ++i) {
     if (v.excluded[i] != 0) mask.excluded |= pipeline::LaneMask{1} << i;

@@ -129,7 +129,7 @@ template <class Findings>
 struct BlockPrefix {
   LaneMask open = 0;                                       ///< lanes the block stages left open
   std::array<std::optional<TimeInterval>, kLanes> answer;  ///< decided lanes: as run_stages answers
-  std::array<Findings, kLanes> findings{};                 ///< open lanes: what the block stages learned
+  std::array<Findings, kLanes> findings;                   ///< open lanes: what the block stages learned
   std::array<bool, kLanes> collides{};                     ///< open lanes: a collision is proved
 };
 
@@ -224,8 +224,16 @@ BlockPrefix<Findings> run_block_prefix(const StageList<Stage...>& list, const Qu
   prefix.open = first_lanes(lanes.size);
   if constexpr (end > 0) {
     const LaneDecisions d = list.template at<0>().block(lanes, question, prefix.findings);
-    for (std::size_t i = 0; i < lanes.size; ++i)
+    // No lane has a collision proved yet: a lane proved apart is answered (nullopt, as the
+    // array holds) and counted at the stage, as StageRun::take does, without going through it.
+    const LaneMask separate = d.separate & prefix.open;
+    if (counters && List::template StageAt<0>::counter)
+      counters->*(List::template StageAt<0>::counter) += static_cast<std::uint64_t>(__builtin_popcount(separate));
+    prefix.open &= ~separate;
+    for (LaneMask decided = d.collides & prefix.open; decided != 0; decided &= decided - 1) {
+      const std::size_t i = static_cast<std::size_t>(__builtin_ctz(decided));  // the lowest lane decided
       detail::decide_lane(d, i, i, List::template StageAt<0>::counter, question, counters, prefix.collides[i], prefix);
+    }
     if constexpr (end > 1) {
       if (prefix.open == 0) return prefix;
       detail::PackedBlock<Query, Findings> packed(lanes, prefix);
