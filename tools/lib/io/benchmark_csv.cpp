@@ -48,9 +48,6 @@ std::size_t significant_digits(const std::string& field) {
 
 }  // namespace
 
-ParseError::ParseError(const std::string& source, std::size_t line, const std::string& what)
-    : InputError(source, source + ":" + std::to_string(line) + ": " + what, true), line_(line) {}
-
 int first_row_columns(std::istream& in) {
   skip_byte_order_mark(in);
   for (std::string line; std::getline(in, line);) {
