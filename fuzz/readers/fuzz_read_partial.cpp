@@ -1,4 +1,4 @@
-// libFuzzer target: cli::read_partial and cli::merge_partials (`exactccd merge`'s input, the
+// libFuzzer target: io::read_partial and cli::merge_partials (`exactccd merge`'s input, the
 // partial files of a sharded compare or fuzz-against run) on arbitrary bytes in a file. Besides
 // reader_oracle.hpp's checks: an accepted file has a shard I < N and a range BEGIN <= END <=
 // TOTAL, and written back (cli::write_partial) reads as the same partial; merging it alone gives
@@ -9,12 +9,13 @@
 
 #include "cli_common.hpp"  // UsageError
 #include "fuzz/readers/reader_oracle.hpp"
-#include "partial.hpp"
+#include "io/partial.hpp"
+#include "partial.hpp"  // the command line's writing and merging of partials (tools/exactccd)
 
 namespace exactccd::fuzzing {
 namespace {
 
-bool same_partial(const cli::Partial& a, const cli::Partial& b) {
+bool same_partial(const io::Partial& a, const io::Partial& b) {
   if (a.command != b.command || a.settings != b.settings || a.shard_index != b.shard_index ||
       a.shard_count != b.shard_count || a.begin != b.begin || a.end != b.end || a.total != b.total ||
       a.records.size() != b.records.size())
@@ -24,7 +25,7 @@ bool same_partial(const cli::Partial& a, const cli::Partial& b) {
   return true;
 }
 
-void check_partial(const cli::Partial& p, std::string_view input) {
+void check_partial(const io::Partial& p, std::string_view input) {
   require(p.shard_index < p.shard_count && p.begin <= p.end && p.end <= p.total, "an impossible shard or range", input);
   static ScratchFile written_file("partial-written");
   try {
@@ -33,7 +34,7 @@ void check_partial(const cli::Partial& p, std::string_view input) {
     return;  // a setting write_partial cannot record (it never writes such a file)
   }
   try {
-    require(same_partial(p, cli::read_partial(written_file.path())), "written back, the partial reads differently", input);
+    require(same_partial(p, io::read_partial(written_file.path())), "written back, the partial reads differently", input);
   } catch (const io::InputError& e) {
     fail(std::string("written back, the partial is refused: ") + e.what(), input);
   }
@@ -41,12 +42,12 @@ void check_partial(const cli::Partial& p, std::string_view input) {
 
 /// merge_partials of the one file: its records when it is the whole run (shard 0 of 1, range [0,
 /// TOTAL)), else a UsageError (missing shards, or a range that is not the shard's).
-void check_merge(const cli::Partial& p, const std::string& path, std::string_view input) {
+void check_merge(const io::Partial& p, const std::string& path, std::string_view input) {
   const bool whole_run = p.shard_count == 1 && p.begin == 0 && p.end == p.total;
   const ReaderOutcome outcome = run_reader(
       [&] {
         try {
-          const cli::Partial m = cli::merge_partials({path});
+          const io::Partial m = cli::merge_partials({path});
           require(whole_run && m.records.size() == p.records.size() && m.total == p.total,
                   "merging a part of a run, or merging loses records", input);
         } catch (const cli::UsageError&) {
@@ -62,7 +63,7 @@ void check_rejects_trailing_garbage(std::string_view input) {
   static ScratchFile file("partial-garbage");
   const std::string& path = file.write(std::string(input) + "\nx\n");
   try {
-    cli::read_partial(path);
+    io::read_partial(path);
   } catch (const io::InputError&) {
     return;
   }
@@ -77,9 +78,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view input = as_text(data, size);
   static ScratchFile file("partial");
   const std::string& path = file.write(input);
-  exactccd::cli::Partial p;
+  exactccd::io::Partial p;
   const ReaderOutcome outcome =
-      run_reader([&] { p = exactccd::cli::read_partial(path); }, path, Location::line, input);
+      run_reader([&] { p = exactccd::io::read_partial(path); }, path, Location::line, input);
   if (!outcome.accepted) return 0;
   check_partial(p, input);
   check_merge(p, path, input);

@@ -741,15 +741,8 @@ constexpr const char* kSceneArgs =
     "The GIL is released during the work. Raises ValueError (the library's message) for a malformed "
     "scene (shapes, dtypes, NaN or infinite coordinates, indices out of range or repeated) or bad options.";
 
-}  // namespace
-}  // namespace exactccd::python
-
-PYBIND11_MODULE(_exactccd, m) {
-  using namespace exactccd;
-  using namespace exactccd::python;
-  m.doc() = "Exact continuous collision detection (the C++ library exactccd): NumPy batch functions per "
-            "primitive kind, scene functions on arrays, and the mesh reader.";
-  m.attr("__version__") = exactccd_version();  // the library's: one version (CMake's project version)
+/// The library's input errors (io::InputError: file:line messages) as ValueError.
+void register_input_errors() {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -757,9 +750,11 @@ PYBIND11_MODULE(_exactccd, m) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });
+}
 
-  // The batch functions of every kind of the one list, and KINDS: function stem -> (rows per
-  // query, coordinates per row), from which the package imports them (exactccd/__init__.py).
+/// The batch functions of every kind of the one list, and KINDS: function stem -> (rows per
+/// query, coordinates per row), from which the package imports them (exactccd/__init__.py).
+void bind_batch_functions(py::module_& m) {
   py::dict batch_kinds;
   kinds::for_each_kind([&](auto kind) {
     using Kind = decltype(kind);
@@ -767,14 +762,20 @@ PYBIND11_MODULE(_exactccd, m) {
     batch_kinds[py::str(std::string(Kind::function))] = py::make_tuple(2 * Kind::points, Kind::dimension);
   });
   m.attr("KINDS") = batch_kinds;
-  define_rigid(m);
+}
 
+/// The collision kinds' numbers and names, as the scene functions report them.
+void bind_collision_kinds(py::module_& m) {
   m.attr("VERTEX_FACE") = static_cast<int>(CollisionKind::vertex_face);
   m.attr("EDGE_EDGE") = static_cast<int>(CollisionKind::edge_edge);
   m.attr("POINT_EDGE") = static_cast<int>(CollisionKind::point_edge);
   m.attr("POINT_POINT") = static_cast<int>(CollisionKind::point_point);
   m.attr("KIND_NAMES") = py::make_tuple("vertex-face", "edge-edge", "point-edge", "point-point");
+}
 
+/// The scene functions on arrays: find_collisions, earliest_toi, is_collision_free and
+/// max_collision_free_step.
+void bind_scene_functions(py::module_& m) {
   const std::string args = kSceneArgs;
   m.def("find_collisions", &find_collisions_py, py::arg("V0"), py::arg("V1"), py::arg("F") = py::none(),
         py::arg("E") = py::none(), py::arg("P") = py::none(), py::arg("min_distance") = 0.0,
@@ -810,6 +811,10 @@ PYBIND11_MODULE(_exactccd, m) {
              "collides, else the largest double strictly below the earliest TOI's lo (0 for a collision at "
              "t = 0).\n\n" +
              args));
+}
+
+/// The narrow phase over the caller's own candidates (exactccd/candidates.hpp).
+void bind_candidate_functions(py::module_& m) {
   const std::string cargs = kCandidateArgs;
   const auto candidate_function = [&](const char* name, auto f, const std::string& doc) {
     m.def(name, f, py::arg("V0"), py::arg("V1"), py::arg("vertex_face") = py::none(),
@@ -834,6 +839,11 @@ PYBIND11_MODULE(_exactccd, m) {
                      "The largest step s <= tmax keeping every candidate at distance > min_distance: tmax when "
                      "none collides, else the largest double strictly below the earliest TOI's lo (0 for a "
                      "collision at t = 0).");
+}
+
+/// exactccd.SceneBroadPhase: the scene's broad phase kept across calls.
+void bind_broad_phase(py::module_& m) {
+  const std::string args = kSceneArgs;
   py::class_<PyBroadPhase>(m, "SceneBroadPhase",
                            "A scene's broad phase kept across calls (the C++ exactccd::SceneBroadPhase): bounding "
                            "volume hierarchies over the triangles, edges and isolated points, built once and refitted "
@@ -869,7 +879,10 @@ PYBIND11_MODULE(_exactccd, m) {
            "True iff no pair of the current scene collides, as exactccd.is_collision_free.")
       .def("max_collision_free_step", &PyBroadPhase::max_collision_free_step_now,
            "The largest collision-free step of the current scene, as exactccd.max_collision_free_step.");
+}
 
+/// The mesh functions: the static self-intersection check and the mesh reader.
+void bind_meshes(py::module_& m) {
   m.def("intersection_free", &intersection_free_py, py::arg("V"), py::arg("F"),
         "Exact static self-intersection check of a triangle mesh: True iff triangles sharing no vertex index "
         "are disjoint and triangles sharing one vertex meet only there (see exactccd/scene.hpp).\n\n"
@@ -881,4 +894,23 @@ PYBIND11_MODULE(_exactccd, m) {
         "comes from the extension and the content, which must agree (the formats the library reads; see "
         "docs/formats.md). Raises FileNotFoundError for a missing file and ValueError with the library's "
         "message (\"<path>:<line>: <reason>\") for an unreadable, unsupported or malformed file.");
+}
+
+}  // namespace
+}  // namespace exactccd::python
+
+PYBIND11_MODULE(_exactccd, m) {
+  using namespace exactccd;
+  using namespace exactccd::python;
+  m.doc() = "Exact continuous collision detection (the C++ library exactccd): NumPy batch functions per "
+            "primitive kind, scene functions on arrays, and the mesh reader.";
+  m.attr("__version__") = exactccd_version();  // the library's: one version (CMake's project version)
+  register_input_errors();
+  bind_batch_functions(m);
+  define_rigid(m);
+  bind_collision_kinds(m);
+  bind_scene_functions(m);
+  bind_candidate_functions(m);
+  bind_broad_phase(m);
+  bind_meshes(m);
 }

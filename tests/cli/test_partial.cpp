@@ -1,4 +1,4 @@
-// The partial files of sharded runs (tools/exactccd/partial.hpp) as `exactccd merge` reads them:
+// The partial files of sharded runs (tools/lib/io/partial.hpp) as `exactccd merge` reads them:
 // the regressions of the reader fuzz target fuzz/readers/fuzz_read_partial.cpp (docs/fuzzing.md,
 // section 5). The merge of real runs is tests/cli/cli_merge.cmake's.
 #include <gtest/gtest.h>

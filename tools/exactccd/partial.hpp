@@ -9,72 +9,33 @@
 // records, so the two outputs are byte-identical by construction (doubles are written as hex
 // floats and read back exactly), and tests/cli/cli_merge.cmake checks it.
 //
-// File format (text, one record per line):
-//   exactccd-partial 1
-//   command NAME                  compare | fuzz-against
-//   setting KEY VALUE             the run's settings; every shard of a run has the same
-//   shard I N
-//   range BEGIN END TOTAL         the global query indices [BEGIN, END) of [0, TOTAL)
-//   ...records...                 command-specific (compare.cpp, fuzz_against.cpp)
-//   end COUNT                     the number of records: a truncated file is an error
+// The file format and its reader: io/partial.hpp.
 #pragma once
 
-#include <cstddef>
 #include <string>
-#include <utility>
 #include <vector>
+
+#include "io/lines.hpp"    // split_words
+#include "io/partial.hpp"  // Partial, read_partial and the records' fields
 
 namespace exactccd::cli {
 
-/// A command-specific line of a partial, with where it was read (for error messages).
-struct PartialRecord {
-  std::string text;
-  std::string source;    ///< the file it was read from ("" when built in memory)
-  std::size_t line = 0;  ///< its line there
-};
-
-/// One shard's partial results.
-struct Partial {
-  std::string command;                                     ///< the subcommand that wrote it
-  std::vector<std::pair<std::string, std::string>> settings;  ///< (key, value) in order
-  std::size_t shard_index = 0, shard_count = 1;
-  std::size_t begin = 0, end = 0, total = 0;               ///< [begin, end) of [0, total)
-  std::vector<PartialRecord> records;                      ///< command-specific lines
-
-  /// Appends a record built in memory.
-  void add(std::string text) { records.push_back({std::move(text), "", 0}); }
-
-  /// The value of setting `key`; throws io::ParseError naming `source` when it is missing.
-  const std::string& setting(const std::string& key, const std::string& source) const;
-};
+using io::hex_double;
+using io::parse_count;
+using io::parse_double;
+using io::parse_int;
+using io::Partial;
+using io::PartialRecord;
+using io::read_partial;
+using io::split_words;
 
 /// Writes `partial` to `path` atomically (AtomicOutputFile: nothing half-written).
 void write_partial(const std::string& path, const Partial& partial);
-
-/// Reads a partial file. Throws io::InputError / io::ParseError ("<path>:<line>: <reason>") on
-/// an unreadable, malformed or truncated file.
-Partial read_partial(const std::string& path);
 
 /// Merges the partials of one run: the same command and settings, the same N and total, every
 /// shard 0..N-1 exactly once, each with the range --shard I/N gives. Returns the merged partial
 /// (shard 0/1, range [0, total), the records in shard order). Throws UsageError naming the
 /// files when they are not the shards of one run.
 Partial merge_partials(const std::vector<std::string>& paths);
-
-/// x as a hex float ("%a"): reads back as the same double.
-std::string hex_double(double x);
-
-/// Parses a hex float written by hex_double (or any finite decimal); throws io::ParseError
-/// naming `source` and `line` when `text` is not a finite double.
-double parse_double(const std::string& text, const std::string& source, std::size_t line);
-
-/// Parses a non-negative integer; throws io::ParseError naming `source` and `line` otherwise.
-std::size_t parse_count(const std::string& text, const std::string& source, std::size_t line);
-
-/// Parses an int (optionally negative); throws io::ParseError naming `source` and `line` otherwise.
-int parse_int(const std::string& text, const std::string& source, std::size_t line);
-
-/// The whitespace-separated words of `line`.
-std::vector<std::string> split_words(const std::string& line);
 
 }  // namespace exactccd::cli

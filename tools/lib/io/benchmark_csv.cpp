@@ -5,17 +5,13 @@
 #include <istream>
 #include <limits>
 #include <ostream>
-#include <sstream>
+#include <string_view>
+#include <vector>
+
+#include "io/lines.hpp"
 
 namespace exactccd::io {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  const auto last = s.find_last_not_of(" \t\r");
-  return s.substr(first, last - first + 1);
-}
 
 /// Why a field is not accepted as an integer.
 enum class FieldError { none, not_an_integer, too_large };
@@ -23,7 +19,7 @@ enum class FieldError { none, not_an_integer, too_large };
 /// A base-10 integer with an optional sign and nothing else, of at most kMaxFieldBits bits.
 /// Too many digits are refused before any conversion (converting 10^5 digits alone is slow).
 FieldError parse_integer(const std::string& field, mpz_class& out) {
-  const std::string s = trim(field);
+  const std::string s(trim(field, kSpaceTabAndCr));
   if (s.empty()) return FieldError::not_an_integer;
   std::size_t i = (s[0] == '-' || s[0] == '+') ? 1 : 0;
   if (i == s.size()) return FieldError::not_an_integer;
@@ -41,100 +37,113 @@ FieldError parse_integer(const std::string& field, mpz_class& out) {
 
 /// The number of decimal digits of an integer field (without sign, spaces and leading zeros).
 std::size_t significant_digits(const std::string& field) {
-  const std::string s = trim(field);
+  const std::string_view s = trim(field, kSpaceTabAndCr);
   const std::size_t from = s.find_first_not_of("+-0");
   return from == std::string::npos ? 0 : s.size() - from;
 }
 
+/// A row's fields (`columns` of them) as integers; errors name the field.
+std::array<mpz_class, 7> read_integers(const std::vector<std::string>& fields, int columns, const LineReader& lines) {
+  std::array<mpz_class, 7> v;
+  for (int i = 0; i < columns; ++i) {
+    const FieldError error = parse_integer(fields[i], v[i]);
+    if (error == FieldError::not_an_integer)
+      lines.fail("field " + std::to_string(i + 1) + " is not an integer: '" +
+                 std::string(trim(fields[i], kSpaceTabAndCr)) + "'");
+    if (error == FieldError::too_large)
+      lines.fail("field " + std::to_string(i + 1) + " has " + std::to_string(significant_digits(fields[i])) +
+                 " digits, more than the limit of " + std::to_string(kMaxFieldBits) +
+                 " bits per numerator or denominator (docs/formats.md, \"Input files\")");
+  }
+  return v;
+}
+
+/// One row: a point (z = 0 in 2D; rationals canonical) and its truth (false without the column).
+struct Row {
+  RationalVec3 point;
+  bool truth = false;
+};
+
+/// A non-blank line as a row of `layout`.
+Row read_row(const std::string& line, const QueryLayout& layout, const LineReader& lines) {
+  if (trim(line, kSpaceTabAndCr)[0] == '#')  // the rigid query files' comment lines: say which command reads them
+    lines.fail("a '#' comment line: benchmark query files have none (rigid query files do: "
+               "exactccd check --motion rigid --kind vf|ee FILE.csv)");
+  const int columns = layout.columns();
+  const std::vector<std::string> fields = split_fields(line);
+  if (fields.size() != static_cast<std::size_t>(columns))
+    lines.fail("expected " + std::to_string(columns) + " comma-separated integers, found " +
+               std::to_string(fields.size()) + " fields");
+  const std::array<mpz_class, 7> v = read_integers(fields, columns, lines);
+  std::array<mpq_class, 3> coordinate{0, 0, 0};
+  for (int c = 0; c < layout.dimension; ++c) {
+    if (v[2 * c + 1] == 0) lines.fail("zero denominator in field " + std::to_string(2 * c + 2));
+    coordinate[c] = mpq_class(v[2 * c], v[2 * c + 1]);
+    coordinate[c].canonicalize();
+  }
+  const mpz_class& truth_field = v[columns - 1];
+  if (layout.truth_column && truth_field != 0 && truth_field != 1) lines.fail("truth must be 0 or 1");
+  return {{coordinate[0], coordinate[1], coordinate[2]}, layout.truth_column && truth_field == 1};
+}
+
+/// Rows gathered into queries of layout.rows rows, each row's truth that of the query's first.
+class QueryRows {
+ public:
+  explicit QueryRows(BenchmarkQueries& queries) : queries_(queries) {}
+  /// The row read on the current line of `lines`.
+  void add(const Row& row, const LineReader& lines) {
+    last_row_line_ = lines.line();
+    if (row_in_query_ == 0) {
+      query_truth_ = row.truth;
+      query_first_line_ = lines.line();
+    } else if (row.truth != query_truth_) {
+      lines.fail("truth differs from the query's first row (line " + std::to_string(query_first_line_) + ")");
+    }
+    rows_[row_in_query_] = row.point;
+    row_lines_[row_in_query_] = lines.line();
+    if (++row_in_query_ < queries_.layout.rows) return;
+    queries_.rows.push_back(rows_);
+    queries_.truth.push_back(query_truth_);
+    queries_.lines.push_back(row_lines_);
+    row_in_query_ = 0;
+  }
+  /// At the end of the input: throws when the last query lacks rows.
+  void finish(const std::string& source) const {
+    if (row_in_query_ != 0)
+      throw ParseError(source, last_row_line_,
+                       "incomplete query: the input ends after " + std::to_string(row_in_query_) + " of its " +
+                           std::to_string(queries_.layout.rows) + " rows (it starts on line " +
+                           std::to_string(query_first_line_) + ")");
+  }
+
+ private:
+  BenchmarkQueries& queries_;
+  std::array<RationalVec3, 8> rows_;
+  std::array<std::size_t, 8> row_lines_{};
+  int row_in_query_ = 0;
+  bool query_truth_ = false;
+  std::size_t query_first_line_ = 0, last_row_line_ = 0;
+};
+
 }  // namespace
 
-ParseError::ParseError(const std::string& source, std::size_t line, const std::string& what)
-    : InputError(source, source + ":" + std::to_string(line) + ": " + what, true), line_(line) {}
-
 int first_row_columns(std::istream& in) {
-  skip_byte_order_mark(in);
-  for (std::string line; std::getline(in, line);) {
-    if (trim(line).empty()) continue;
-    return static_cast<int>(std::count(line.begin(), line.end(), ',')) + 1;
-  }
-  return 0;
+  LineReader lines(in, "");
+  std::string line;
+  if (!lines.next_nonblank(line, kSpaceTabAndCr)) return 0;
+  return static_cast<int>(std::count(line.begin(), line.end(), ',')) + 1;
 }
 
 BenchmarkQueries read_benchmark_csv(std::istream& in, const std::string& source_name, QueryLayout layout) {
   if (layout.rows < 1 || layout.rows > 8 || (layout.dimension != 2 && layout.dimension != 3))
     throw std::invalid_argument("read_benchmark_csv: unsupported layout");
-  const int columns = layout.columns();
   BenchmarkQueries result;
   result.layout = layout;
-  std::array<RationalVec3, 8> current;
-  int row_in_query = 0;
-  bool query_truth = false;
-  std::size_t line_number = 0, query_first_line = 0, last_row_line = 0;
-  std::array<std::size_t, 8> current_lines{};
-  skip_byte_order_mark(in);
-  std::string line;
-  while (std::getline(in, line)) {
-    ++line_number;
-    if (trim(line).empty()) continue;
-    last_row_line = line_number;
-    if (trim(line)[0] == '#')  // the rigid query files' comment lines: say which command reads them
-      throw ParseError(source_name, line_number,
-                       "a '#' comment line: benchmark query files have none (rigid query files do: "
-                       "exactccd check --motion rigid --kind vf|ee FILE.csv)");
-    std::vector<std::string> fields;
-    std::stringstream ss(line);
-    for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    if (fields.size() != static_cast<std::size_t>(columns))
-      throw ParseError(source_name, line_number,
-                       "expected " + std::to_string(columns) + " comma-separated integers, found " +
-                           std::to_string(fields.size()) + " fields");
-    std::array<mpz_class, 7> v;
-    for (int i = 0; i < columns; ++i) {
-      const FieldError error = parse_integer(fields[i], v[i]);
-      if (error == FieldError::not_an_integer)
-        throw ParseError(source_name, line_number,
-                         "field " + std::to_string(i + 1) + " is not an integer: '" + trim(fields[i]) + "'");
-      if (error == FieldError::too_large)
-        throw ParseError(source_name, line_number,
-                         "field " + std::to_string(i + 1) + " has " + std::to_string(significant_digits(fields[i])) +
-                             " digits, more than the limit of " + std::to_string(kMaxFieldBits) +
-                             " bits per numerator or denominator (docs/formats.md, \"Input files\")");
-    }
-    std::array<mpq_class, 3> coordinate{0, 0, 0};
-    for (int c = 0; c < layout.dimension; ++c) {
-      if (v[2 * c + 1] == 0)
-        throw ParseError(source_name, line_number, "zero denominator in field " + std::to_string(2 * c + 2));
-      coordinate[c] = mpq_class(v[2 * c], v[2 * c + 1]);
-      coordinate[c].canonicalize();
-    }
-    const mpz_class& truth_field = v[columns - 1];
-    if (layout.truth_column && truth_field != 0 && truth_field != 1)
-      throw ParseError(source_name, line_number, "truth must be 0 or 1");
-    const bool truth = layout.truth_column && truth_field == 1;
-    if (row_in_query == 0) {
-      query_truth = truth;
-      query_first_line = line_number;
-    } else if (truth != query_truth) {
-      throw ParseError(source_name, line_number,
-                       "truth differs from the query's first row (line " +
-                           std::to_string(query_first_line) + ")");
-    }
-    current[row_in_query] = {coordinate[0], coordinate[1], coordinate[2]};
-    current_lines[row_in_query] = line_number;
-    if (++row_in_query == layout.rows) {
-      result.rows.push_back(current);
-      result.truth.push_back(query_truth);
-      result.lines.push_back(current_lines);
-      row_in_query = 0;
-    }
-  }
-  if (in.bad()) throw ParseError(source_name, line_number, "read error");
-  if (row_in_query != 0)
-    throw ParseError(source_name, last_row_line,
-                     "incomplete query: the input ends after " + std::to_string(row_in_query) +
-                         " of its " + std::to_string(layout.rows) + " rows (it starts on line " + std::to_string(query_first_line) +
-                         ")");
+  QueryRows rows(result);
+  LineReader lines(in, source_name);
+  for (std::string line; lines.next_nonblank(line, kSpaceTabAndCr);) rows.add(read_row(line, layout, lines), lines);
+  if (in.bad()) throw ParseError(source_name, lines.line(), "read error");
+  rows.finish(source_name);
   return result;
 }
 

@@ -14,22 +14,9 @@
 
 #include "exactccd/rational.hpp"
 #include "exactccd/types.hpp"
-#include "io/input_file.hpp"  // InputError
+#include "io/input_file.hpp"  // InputError, ParseError
 
 namespace exactccd::io {
-
-/// A malformed input: what is wrong, where (source name and 1-based line). what() is
-/// "<source>:<line>: <reason>".
-class ParseError : public InputError {
- public:
-  /// An error in `source` at 1-based `line`; `what` is the reason.
-  ParseError(const std::string& source, std::size_t line, const std::string& what);
-  /// The 1-based line of the error.
-  std::size_t line() const { return line_; }
-
- private:
-  std::size_t line_;
-};
 
 /// The largest numerator or denominator read_benchmark_csv accepts, in bits (1233 decimal
 /// digits). Every double fits with room to spare (its numerator has at most 1024 bits, its

@@ -14,6 +14,9 @@ InputError::InputError(const std::string& source, const std::string& reason)
 InputError::InputError(const std::string& source, const std::string& what, bool)
     : std::runtime_error(what), source_(source) {}
 
+ParseError::ParseError(const std::string& source, std::size_t line, const std::string& what)
+    : InputError(source, source + ":" + std::to_string(line) + ": " + what, true), line_(line) {}
+
 bool skip_byte_order_mark(std::istream& in) {
   static constexpr unsigned char kBom[3] = {0xEF, 0xBB, 0xBF};
   if (in.peek() != kBom[0]) return false;

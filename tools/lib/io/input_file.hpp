@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <iosfwd>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -25,6 +26,19 @@ class InputError : public std::runtime_error {
 
  private:
   std::string source_;
+};
+
+/// A malformed input: what is wrong, where (source name and 1-based line). what() is
+/// "<source>:<line>: <reason>".
+class ParseError : public InputError {
+ public:
+  /// An error in `source` at 1-based `line`; `what` is the reason.
+  ParseError(const std::string& source, std::size_t line, const std::string& what);
+  /// The 1-based line of the error.
+  std::size_t line() const { return line_; }
+
+ private:
+  std::size_t line_;
 };
 
 /// Consumes a UTF-8 byte order mark (EF BB BF) at the stream's current position, if there is

@@ -8,20 +8,14 @@
 #include <ostream>
 #include <sstream>
 #include <system_error>
+#include <utility>
 
 #include "io/decimal.hpp"
+#include "io/lines.hpp"
 #include "io/polygon.hpp"
 
 namespace exactccd::io {
 namespace {
-
-/// The whitespace-separated tokens of a line, without a trailing `#` comment.
-std::vector<std::string> tokens(const std::string& line) {
-  std::istringstream ss(line.substr(0, line.find('#')));
-  std::vector<std::string> out;
-  for (std::string t; ss >> t;) out.push_back(t);
-  return out;
-}
 
 /// A finite double written as a decimal (an optional leading '+' allowed); throws ParseError.
 double parse_coordinate(const std::string& token, const std::string& source, std::size_t line) {
@@ -151,76 +145,98 @@ class References {
   std::vector<Forward> forward_;
 };
 
+/// An OBJ file being read statement by statement: the vertices, the faces (triangulated at the
+/// end, once every forward reference is known to name an element of the file) and the counts
+/// the references are checked against. Errors name the current line of `lines`.
+class ObjReader {
+ public:
+  explicit ObjReader(const LineReader& lines) : lines_(lines), references_(lines.source()) {}
+
+  /// One statement: a line's words (its comment cut).
+  void statement(const std::vector<std::string>& t) {
+    if (t[0] == "v") {
+      vertex(t);
+    } else if (t[0] == "vt" || t[0] == "vp") {
+      check_numbers(t, 1, 3, t[0] == "vt" ? "texture vertex" : "parameter vertex", source(), line());
+      if (t[0] == "vt") references_.count(1);
+    } else if (t[0] == "vn") {
+      check_numbers(t, 3, 3, "normal", source(), line());
+      references_.count(2);
+    } else if (t[0] == "l" || t[0] == "p") {
+      line_or_point(t);
+    } else if (is_ignored_statement(t[0])) {
+      return;
+    } else if (is_free_form_statement(t[0])) {
+      lines_.fail("OBJ free-form geometry ('" + t[0] + "') is not supported (triangle and polygon faces only)");
+    } else if (t[0] != "f") {
+      lines_.fail("unknown OBJ keyword '" + t[0] +
+                  "' (expected v, vt, vn, vp, f, l, p, o, g, s, mtllib, usemtl or a # comment)");
+    } else {
+      face(t);
+    }
+  }
+
+  /// The mesh, after the last statement: the faces fan-triangulated.
+  ObjMesh finish() {
+    references_.check_forward();  // every index is in range from here on
+    for (const Face& f : faces_)
+      for (std::size_t i = 2; i < f.vertices.size(); ++i)
+        mesh_.triangles.push_back({static_cast<int>(f.vertices[0]), static_cast<int>(f.vertices[i - 1]),
+                                   static_cast<int>(f.vertices[i])});
+    return std::move(mesh_);
+  }
+
+ private:
+  const std::string& source() const { return lines_.source(); }
+  std::size_t line() const { return lines_.line(); }
+
+  /// `v x y z`, with a w or an r g b colour checked and ignored.
+  void vertex(const std::vector<std::string>& t) {
+    if (t.size() < 4) lines_.fail("vertex with " + std::to_string(t.size() - 1) + " coordinates (expected x y z)");
+    if (t.size() != 4 && t.size() != 5 && t.size() != 7)
+      lines_.fail("vertex with " + std::to_string(t.size() - 1) + " numbers (expected x y z, x y z w or x y z r g b)");
+    if (mesh_.vertices.size() >= static_cast<std::size_t>(INT_MAX)) lines_.fail("more than INT_MAX vertices");
+    for (std::size_t i = 4; i < t.size(); ++i) parse_coordinate(t[i], source(), line());
+    mesh_.vertices.push_back({parse_coordinate(t[1], source(), line()), parse_coordinate(t[2], source(), line()),
+                              parse_coordinate(t[3], source(), line())});
+    references_.count(0);
+  }
+
+  /// `l` (at least 2 vertices) or `p` (at least 1): references checked, nothing kept.
+  void line_or_point(const std::vector<std::string>& t) {
+    const bool is_line = t[0] == "l";
+    const std::size_t least = is_line ? 2 : 1;
+    if (t.size() - 1 < least)
+      lines_.fail(std::string(is_line ? "line" : "point") + " with " + std::to_string(t.size() - 1) +
+                  " vertices (expected at least " + std::to_string(least) + ")");
+    for (std::size_t i = 1; i < t.size(); ++i)
+      references_.resolve(parse_reference(t[i], source(), line()), is_line ? "line" : "point", line());
+  }
+
+  /// `f` with at least three vertex references, none repeated.
+  void face(const std::vector<std::string>& t) {
+    if (t.size() < 4) lines_.fail("face with " + std::to_string(t.size() - 1) + " vertices (expected at least 3)");
+    Face f{{}, line()};
+    for (std::size_t i = 1; i < t.size(); ++i)
+      f.vertices.push_back(references_.resolve(parse_reference(t[i], source(), line()), "face", line()));
+    if (const auto repeated = first_repeated_vertex(f.vertices))
+      lines_.fail("degenerate face: vertex " + std::to_string(*repeated + 1) + " appears twice");
+    faces_.push_back(std::move(f));
+  }
+
+  const LineReader& lines_;
+  ObjMesh mesh_;
+  std::vector<Face> faces_;
+  References references_;
+};
+
 }  // namespace
 
 ObjMesh read_obj(std::istream& in, const std::string& source_name) {
-  ObjMesh mesh;
-  std::vector<Face> faces;
-  References references(source_name);
-  std::size_t line_number = 0;
-  skip_byte_order_mark(in);
-  for (std::string line; std::getline(in, line);) {
-    ++line_number;
-    const std::vector<std::string> t = tokens(line);
-    if (t.empty()) continue;
-    if (t[0] == "v") {
-      if (t.size() < 4)
-        throw ParseError(source_name, line_number,
-                         "vertex with " + std::to_string(t.size() - 1) + " coordinates (expected x y z)");
-      if (t.size() != 4 && t.size() != 5 && t.size() != 7)
-        throw ParseError(source_name, line_number,
-                         "vertex with " + std::to_string(t.size() - 1) +
-                             " numbers (expected x y z, x y z w or x y z r g b)");
-      if (mesh.vertices.size() >= static_cast<std::size_t>(INT_MAX))
-        throw ParseError(source_name, line_number, "more than INT_MAX vertices");
-      for (std::size_t i = 4; i < t.size(); ++i) parse_coordinate(t[i], source_name, line_number);
-      mesh.vertices.push_back({parse_coordinate(t[1], source_name, line_number),
-                               parse_coordinate(t[2], source_name, line_number),
-                               parse_coordinate(t[3], source_name, line_number)});
-      references.count(0);
-    } else if (t[0] == "vt" || t[0] == "vp") {
-      check_numbers(t, 1, 3, t[0] == "vt" ? "texture vertex" : "parameter vertex", source_name, line_number);
-      if (t[0] == "vt") references.count(1);
-    } else if (t[0] == "vn") {
-      check_numbers(t, 3, 3, "normal", source_name, line_number);
-      references.count(2);
-    } else if (t[0] == "l" || t[0] == "p") {
-      const std::size_t least = t[0] == "l" ? 2 : 1;
-      if (t.size() - 1 < least)
-        throw ParseError(source_name, line_number,
-                         std::string(t[0] == "l" ? "line" : "point") + " with " + std::to_string(t.size() - 1) +
-                             " vertices (expected at least " + std::to_string(least) + ")");
-      for (std::size_t i = 1; i < t.size(); ++i)
-        references.resolve(parse_reference(t[i], source_name, line_number), t[0] == "l" ? "line" : "point", line_number);
-    } else if (is_ignored_statement(t[0])) {
-      continue;
-    } else if (is_free_form_statement(t[0])) {
-      throw ParseError(source_name, line_number,
-                       "OBJ free-form geometry ('" + t[0] + "') is not supported (triangle and polygon faces only)");
-    } else if (t[0] != "f") {
-      throw ParseError(source_name, line_number,
-                       "unknown OBJ keyword '" + t[0] +
-                           "' (expected v, vt, vn, vp, f, l, p, o, g, s, mtllib, usemtl or a # comment)");
-    } else {
-      if (t.size() < 4)
-        throw ParseError(source_name, line_number,
-                         "face with " + std::to_string(t.size() - 1) + " vertices (expected at least 3)");
-      Face f{{}, line_number};
-      for (std::size_t i = 1; i < t.size(); ++i)
-        f.vertices.push_back(references.resolve(parse_reference(t[i], source_name, line_number), "face", line_number));
-      if (const auto repeated = first_repeated_vertex(f.vertices))
-        throw ParseError(source_name, line_number,
-                         "degenerate face: vertex " + std::to_string(*repeated + 1) + " appears twice");
-      faces.push_back(std::move(f));
-    }
-  }
-  references.check_forward();  // every index is in range from here on
-  for (const Face& f : faces) {
-    for (std::size_t i = 2; i < f.vertices.size(); ++i)
-      mesh.triangles.push_back({static_cast<int>(f.vertices[0]), static_cast<int>(f.vertices[i - 1]),
-                                static_cast<int>(f.vertices[i])});
-  }
-  return mesh;
+  LineReader lines(in, source_name, '#');
+  ObjReader reader(lines);
+  for (std::vector<std::string> t; lines.next_words(t);) reader.statement(t);
+  return reader.finish();
 }
 
 void write_obj(std::ostream& out, const std::vector<Vec3>& vertices,

@@ -5,25 +5,20 @@
 #include <cstdio>
 #include <cstdlib>
 #include <istream>
-#include <tuple>
 #include <ostream>
+#include <tuple>
+#include <vector>
 
 #include "exactccd/rigid.hpp"
+#include "io/lines.hpp"
 #include "rigid/validation.hpp"
 
 namespace exactccd::io {
 namespace {
 
-std::string trimmed(const std::string& s) {
-  const auto begin = s.find_first_not_of(" \t");
-  if (begin == std::string::npos) return "";
-  const auto end = s.find_last_not_of(" \t");
-  return s.substr(begin, end - begin + 1);
-}
-
 /// The number in `field` (trimmed), or a ParseError.
 double number(const std::string& field, const std::string& source, std::size_t line, std::size_t index) {
-  const std::string f = trimmed(field);
+  const std::string f(trim(field, kSpaceAndTab));
   const std::string where = "field " + std::to_string(index + 1) + ": ";
   if (f.empty()) throw ParseError(source, line, where + "empty");
   errno = 0;
@@ -35,42 +30,30 @@ double number(const std::string& field, const std::string& source, std::size_t l
   return v;
 }
 
+/// One query's line: 40 numbers and the truth, both bodies' motions valid.
+void read_query(const std::string& text, const LineReader& lines, RigidQueries& out) {
+  const std::vector<std::string> fields = split_fields(text);
+  if (fields.size() != rigid::kQueryNumbers + 1)
+    lines.fail("expected 41 comma-separated numbers (40 and the truth), found " + std::to_string(fields.size()));
+  std::array<double, rigid::kQueryNumbers> x;
+  for (std::size_t i = 0; i < rigid::kQueryNumbers; ++i) x[i] = number(fields[i], lines.source(), lines.line(), i);
+  const std::string truth(trim(fields.back(), kSpaceAndTab));
+  if (truth != "0" && truth != "1") lines.fail("the truth (field 41) must be 0 or 1, not '" + truth + "'");
+  const auto q = rigid::from_numbers<RigidVertexFaceQuery>(x.data());  // the poses are the same for both kinds
+  for (const auto& [name, t0, t1] : {std::tuple{"body A", q.a_t0, q.a_t1}, std::tuple{"body B", q.b_t0, q.b_t1}})
+    if (const char* why = rigid::invalid_motion(t0, t1)) lines.fail(std::string(name) + ": " + why);
+  out.numbers.push_back(x);
+  out.truth.push_back(truth == "1");
+  out.lines.push_back(lines.line());
+}
+
 }  // namespace
 
 RigidQueries read_rigid_csv(std::istream& in, const std::string& source) {
   RigidQueries out;
-  std::string text;
-  std::size_t line = 0;
-  bool first = true;
-  while (std::getline(in, text)) {
-    ++line;
-    if (first && text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
-    first = false;
-    if (!text.empty() && text.back() == '\r') text.pop_back();
-    const std::string t = trimmed(text);
-    if (t.empty() || t[0] == '#') continue;
-    std::vector<std::string> fields;
-    std::size_t start = 0;
-    for (;;) {
-      const std::size_t comma = text.find(',', start);
-      fields.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
-    if (fields.size() != rigid::kQueryNumbers + 1)
-      throw ParseError(source, line, "expected 41 comma-separated numbers (40 and the truth), found " +
-                                         std::to_string(fields.size()));
-    std::array<double, rigid::kQueryNumbers> x;
-    for (std::size_t i = 0; i < rigid::kQueryNumbers; ++i) x[i] = number(fields[i], source, line, i);
-    const std::string truth = trimmed(fields.back());
-    if (truth != "0" && truth != "1") throw ParseError(source, line, "the truth (field 41) must be 0 or 1, not '" + truth + "'");
-    const auto q = rigid::from_numbers<RigidVertexFaceQuery>(x.data());  // the poses are the same for both kinds
-    for (const auto& [name, t0, t1] : {std::tuple{"body A", q.a_t0, q.a_t1}, std::tuple{"body B", q.b_t0, q.b_t1}})
-      if (const char* why = rigid::invalid_motion(t0, t1)) throw ParseError(source, line, std::string(name) + ": " + why);
-    out.numbers.push_back(x);
-    out.truth.push_back(truth == "1");
-    out.lines.push_back(line);
-  }
+  LineReader lines(in, source);
+  for (std::string text; lines.next_nonblank(text, kSpaceAndTab);)
+    if (trim(text, kSpaceAndTab)[0] != '#') read_query(text, lines, out);  // not a comment line
   return out;
 }
 
