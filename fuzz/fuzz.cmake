@@ -129,5 +129,4 @@ if(EXACTCCD_BUILD_FUZZERS)
     set_tests_properties(fuzz.read_${reader}.smoke PROPERTIES TIMEOUT 120
       ENVIRONMENT "ASAN_OPTIONS=detect_leaks=1;UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
   endforeach()
-  target_link_libraries(fuzz_read_partial PRIVATE exactccd_cli_common)
 endif()

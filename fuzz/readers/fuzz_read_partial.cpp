@@ -1,16 +1,16 @@
-// libFuzzer target: io::read_partial and cli::merge_partials (`exactccd merge`'s input, the
+// libFuzzer target: io::read_partial and io::merge_partials (`exactccd merge`'s input, the
 // partial files of a sharded compare or fuzz-against run) on arbitrary bytes in a file. Besides
 // reader_oracle.hpp's checks: an accepted file has a shard I < N and a range BEGIN <= END <=
-// TOTAL, and written back (cli::write_partial) reads as the same partial; merging it alone gives
+// TOTAL, and written back (io::write_partial) reads as the same partial; merging it alone gives
 // its records when it is the whole run (shard 0 of 1, range [0, TOTAL)) and a usage error
 // otherwise, holding no memory by the untrusted N. docs/fuzzing.md, section 5.
 #include <cstddef>
 #include <cstdint>
 
-#include "cli_common.hpp"  // UsageError
 #include "fuzz/readers/reader_oracle.hpp"
+#include "io/input_file.hpp"  // UsageError
 #include "io/partial.hpp"
-#include "partial.hpp"  // the command line's writing and merging of partials (tools/exactccd)
+#include "io/partial_merge.hpp"  // the writing and merging the command line uses
 
 namespace exactccd::fuzzing {
 namespace {
@@ -29,8 +29,8 @@ void check_partial(const io::Partial& p, std::string_view input) {
   require(p.shard_index < p.shard_count && p.begin <= p.end && p.end <= p.total, "an impossible shard or range", input);
   static ScratchFile written_file("partial-written");
   try {
-    cli::write_partial(written_file.path(), p);
-  } catch (const cli::UsageError&) {
+    io::write_partial(written_file.path(), p);
+  } catch (const io::UsageError&) {
     return;  // a setting write_partial cannot record (it never writes such a file)
   }
   try {
@@ -47,10 +47,10 @@ void check_merge(const io::Partial& p, const std::string& path, std::string_view
   const ReaderOutcome outcome = run_reader(
       [&] {
         try {
-          const io::Partial m = cli::merge_partials({path});
+          const io::Partial m = io::merge_partials({path});
           require(whole_run && m.records.size() == p.records.size() && m.total == p.total,
                   "merging a part of a run, or merging loses records", input);
-        } catch (const cli::UsageError&) {
+        } catch (const io::UsageError&) {
           require(!whole_run, "merging the whole run's only partial is refused", input);
         }
       },

@@ -29,10 +29,9 @@
 #include <vector>
 
 #include "baseline/naive_ccd.hpp"
-#include "cli_common.hpp"
-#include "data_dir.hpp"
 #include "exactccd/exactccd.hpp"
 #include "io/benchmark_csv.hpp"
+#include "io/data_dir.hpp"
 #include "scene/scene_primitives.hpp"
 #include "scenes/procedural_scenes.hpp"
 
@@ -165,7 +164,7 @@ void measure(const Workload& w, double d, int rounds) {
 
 int main(int argc, char** argv) {
   int rounds = 7;
-  std::string data;  // empty: found like the exactccd program's (tools/exactccd/data_dir.hpp)
+  std::string data;  // empty: found like the exactccd program's (tools/lib/io/data_dir.hpp)
   fs::path funnel = EXACTCCD_SCALABLE_SAMPLE_DIR;
   std::string only;
   std::vector<double> distances{0.0, 1e-3};
@@ -182,8 +181,8 @@ int main(int argc, char** argv) {
   }
   fs::path data_dir;
   try {
-    data_dir = exactccd::cli::bundled_data_dir(data, "batch_bench");
-  } catch (const exactccd::cli::UsageError& e) {
+    data_dir = exactccd::io::bundled_data_dir(data, "batch_bench");
+  } catch (const exactccd::io::InputError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 2;
   }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
-#include "data_dir.hpp"
+#include "io/data_dir.hpp"
 #include "motions.hpp"
 #include "subcommands.hpp"
 
@@ -123,7 +123,7 @@ template <class Motion>
 std::vector<typename Motion::Dataset> load_files(const BenchSettings& s) {
   const std::string name = subcommand_name<Motion>("bench");
   const std::vector<std::string> files =
-      s.files.empty() ? Motion::bundled_files(bundled_data_dir(s.data_dir, name)) : s.files;
+      s.files.empty() ? Motion::bundled_files(io::bundled_data_dir(s.data_dir, name)) : s.files;
   if (files.empty())
     throw UsageError(name + ": no dataset given and no bundled dataset found");
   std::vector<typename Motion::Dataset> datasets;

@@ -14,6 +14,7 @@
 #include "exactccd/exactccd.hpp"
 #include "exactccd/rational.hpp"
 #include "io/benchmark_csv.hpp"
+#include "io/input_file.hpp"
 #include "kinds/primitive_kinds.hpp"
 #include "options.hpp"
 #include "scene/parallel.hpp"
@@ -28,10 +29,9 @@ enum ExitCode : int {
   kExitUsage = 2,        ///< bad command line or malformed input file
 };
 
-/// A command-line or input error: printed as "exactccd: <message>", exit code 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+/// A command-line or input error: printed as "exactccd: <message>", exit code 2 (io::UsageError,
+/// which the tools library's writers and readers throw too).
+using UsageError = io::UsageError;
 
 /// A primitive kind at run time: the position of its description in
 /// kinds::for_each_kind (lib/kinds/primitive_kinds.hpp: vf, ee, pe, pp, ee2, pe2,

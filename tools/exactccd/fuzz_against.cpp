@@ -14,7 +14,7 @@
 #include "fuzz_against_plugin.hpp"
 #include "fuzz_against_queries.hpp"
 #include "fuzz_against_report.hpp"
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 #include "partial.hpp"
 #include "subcommands.hpp"
 
@@ -126,7 +126,7 @@ std::vector<std::pair<std::string, std::string>> partial_settings(const FuzzRun&
 /// A run (or one shard of it): the report, or with run.partial_path the partial results.
 int run_kind(const FuzzRun& run, const FuzzKind& kind) {
   const Plugin plugin(run.plugin_path, kind, run.params);
-  if (run.partial_path.empty()) prepare_output_directory(run.out_dir);  // fail before the work
+  if (run.partial_path.empty()) io::prepare_output_directory(run.out_dir);  // fail before the work
   const Groups groups = make_groups(kind, run.params);
   const std::size_t begin = run.queries * run.shard_index / run.shard_count;
   const std::size_t end = run.queries * (run.shard_index + 1) / run.shard_count;

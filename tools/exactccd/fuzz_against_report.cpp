@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 
 namespace exactccd::cli::fuzz {
 namespace {
@@ -136,7 +136,7 @@ std::string benchmark_csv(const FuzzKind& kind, const std::vector<const Rows*>& 
 }
 
 void write_to(const FuzzRun& run, const std::string& name, const std::string& text) {
-  write_file_atomically((fs::path(run.out_dir) / name).string(), text);
+  io::write_file_atomically((fs::path(run.out_dir) / name).string(), text);
 }
 
 Row total_of(const FuzzTally& t) {
@@ -286,7 +286,7 @@ FuzzTally tally_from_records(const Partial& p, std::size_t group_count) {
 }
 
 void report_fuzz(const ReportContext& c, const FuzzTally& t) {
-  prepare_output_directory(c.run.out_dir);
+  io::prepare_output_directory(c.run.out_dir);
   print_table(c, t);
   if (c.reports_toi) print_toi_summary(c, t);
   // Replace this kind's files of an earlier run, then write.

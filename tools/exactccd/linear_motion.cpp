@@ -12,9 +12,9 @@
 #include <utility>
 #include <variant>
 
-#include "data_dir.hpp"
 #include "generators/catalogue.hpp"
 #include "generators/families.hpp"
+#include "io/data_dir.hpp"
 #include "query_sets.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "subcommands.hpp"
@@ -66,7 +66,7 @@ void LinearMotion::require_answers(const Dataset& d, tools::Method method, const
 
 std::vector<std::string> LinearMotion::bundled_files(const fs::path& data) {
   std::vector<std::string> files;
-  if (const std::optional<fs::path> sample_dir = shared_sample_dir()) {
+  if (const std::optional<fs::path> sample_dir = io::shared_sample_dir()) {
     const fs::path sample = *sample_dir / "unit-tests";
     for (const char* f : {"vertex-face/data_0_0.csv", "vertex-face/data_0_1.csv",
                           "edge-edge/data_0_0.csv", "edge-edge/data_0_1.csv"})
@@ -267,7 +267,7 @@ io::BenchmarkQueries kept_queries(const std::vector<Query>& candidates, const Se
 
 void write_catalogue(const ParsedOptions& options) {
   const std::string out = options.text("--out");
-  prepare_output_directory(out);
+  io::prepare_output_directory(out);
   write_benchmark_file(fs::path(out) / "catalogue-vertex-face.csv", to_benchmark(catalogue::vertex_face_cases()));
   write_benchmark_file(fs::path(out) / "catalogue-edge-edge.csv", to_benchmark(catalogue::edge_edge_cases()));
 }
@@ -329,7 +329,7 @@ void write_families(const ParsedOptions& options) {
         add_family_instance(sets, f, k, toward, where, wide, rng);
       }
   const std::string out = options.text("--out");
-  prepare_output_directory(out);
+  io::prepare_output_directory(out);
   const std::string note = " (truth: " + std::to_string(sets.constructed) + " of " + std::to_string(sets.total) +
                            " by construction, checked against Method::exact; the others by Method::exact)";
   const std::string prefix = wide ? "families-wide-" : "families-";
@@ -356,7 +356,7 @@ void write_sim(const ParsedOptions& options) {
   const auto max_queries = static_cast<std::size_t>(options.integer("--max-queries"));
   const unsigned threads = batch_options(options).threads;
   if (!options.has("--scene")) throw UsageError("generate sim: --scene cloth|strip|fold|pile is required");
-  prepare_output_directory(out);  // an unwritable DIR fails before the work
+  io::prepare_output_directory(out);  // an unwritable DIR fails before the work
   const std::string name = options.text("--scene");
   const scene::MovingMesh mesh = scene_of(options, "generate sim");
   const Method truth_method = truth_name == "exact" ? Method::exact : Method::filtered;

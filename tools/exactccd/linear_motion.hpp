@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "motion.hpp"
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 
 namespace exactccd::cli {
 
@@ -112,7 +112,7 @@ class LinearMotion::BenchTable {
  private:
   const BenchSettings& s_;
   FILE* table_;  ///< stdout, or stderr when --json - takes stdout
-  std::optional<AtomicOutputFile> json_file_;
+  std::optional<io::AtomicOutputFile> json_file_;
   std::vector<Row> rows_;
 };
 

@@ -9,14 +9,17 @@
 // records, so the two outputs are byte-identical by construction (doubles are written as hex
 // floats and read back exactly), and tests/cli/cli_merge.cmake checks it.
 //
-// The file format and its reader: io/partial.hpp.
+// The file format and its reader: io/partial.hpp; its writing and merging: io/partial_merge.hpp
+// (here: their names in the command line's namespace).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "io/lines.hpp"    // split_words
+#include "cli_common.hpp"   // kMaxShards
 #include "io/partial.hpp"  // Partial, read_partial and the records' fields
+#include "io/partial_merge.hpp"  // write_partial, merge_partials
 
 namespace exactccd::cli {
 
@@ -29,13 +32,10 @@ using io::PartialRecord;
 using io::read_partial;
 using io::split_words;
 
-/// Writes `partial` to `path` atomically (AtomicOutputFile: nothing half-written).
-void write_partial(const std::string& path, const Partial& partial);
+using io::merge_partials;
+using io::write_partial;
 
-/// Merges the partials of one run: the same command and settings, the same N and total, every
-/// shard 0..N-1 exactly once, each with the range --shard I/N gives. Returns the merged partial
-/// (shard 0/1, range [0, total), the records in shard order). Throws UsageError naming the
-/// files when they are not the shards of one run.
-Partial merge_partials(const std::vector<std::string>& paths);
+// The reader's shard limit is the --shard option's.
+static_assert(static_cast<long long>(io::kMaxPartialShards) == kMaxShards);
 
 }  // namespace exactccd::cli

@@ -2,13 +2,13 @@
 
 #include <cstdio>
 
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 
 namespace exactccd::cli {
 
 void write_query_file(const std::string& path, const std::vector<bool>& truth, const std::string& note,
                       const std::function<void(std::ostream&)>& write) {
-  AtomicOutputFile out(path);
+  io::AtomicOutputFile out(path);
   write(out.stream());
   out.commit();
   std::size_t positives = 0;

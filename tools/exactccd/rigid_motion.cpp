@@ -14,7 +14,7 @@
 #include "exactccd/rigid.hpp"
 #include "generators/rigid_families.hpp"
 #include "io/input_file.hpp"
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 #include "query_sets.hpp"
 #include "scenes/rigid_sim.hpp"
 
@@ -226,7 +226,7 @@ void append(io::RigidQueries& q, const Query& query, bool truth) {
 void write_families(const ParsedOptions& options) {
   const std::uint64_t seed = options.unsigned64("--seed");
   const std::string out = options.text("--out");
-  prepare_output_directory(out);
+  io::prepare_output_directory(out);
   io::RigidQueries families_of[2];  // vertex-face, edge-edge
   std::mt19937_64 rng(seed);
   for (const rigid_families::Family& f : rigid_families::all_families())
@@ -295,7 +295,7 @@ void write_sim(const ParsedOptions& options) {
     if (scenes.empty())
       throw UsageError("generate sim --motion rigid: no rigid scene '" + name + "' (the scenes: " + names + ")");
   }
-  prepare_output_directory(out);
+  io::prepare_output_directory(out);
   for (const rigid_sim::Scene& scene : scenes) {
     const rigid_sim::StepQueries q = scene_candidates(scene);
     const std::string prefix = "rigid-sim-" + scene.name + "-";

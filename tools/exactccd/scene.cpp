@@ -13,7 +13,7 @@
 #include "io/mesh_file.hpp"
 #include "io/obj.hpp"
 #include "scene/parallel.hpp"
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 #include "scenes/procedural_scenes.hpp"
 #include "scene/scene_primitives.hpp"
 #include "numeric/simd_level.hpp"
@@ -278,14 +278,14 @@ int generate_scene(const std::string& scene_name, int resolution, std::uint64_t 
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("generate scene: ") + e.what());
   }
-  prepare_output_directory(out);
+  io::prepare_output_directory(out);
   const std::string comment = "exactccd generate scene --scene " + scene_name + " --resolution " +
                               std::to_string(resolution) + " --seed " + std::to_string(seed);
   // Both files go to temporaries first, renamed once both are written: no half-written pair.
   const char* const names[] = {"T0.obj", "T1.obj"};
   const std::vector<Vec3>* const positions[] = {&mesh.positions_t0, &mesh.positions_t1};
-  AtomicOutputFile t0((fs::path(out) / names[0]).string()), t1((fs::path(out) / names[1]).string());
-  AtomicOutputFile* const files[] = {&t0, &t1};
+  io::AtomicOutputFile t0((fs::path(out) / names[0]).string()), t1((fs::path(out) / names[1]).string());
+  io::AtomicOutputFile* const files[] = {&t0, &t1};
   for (int i = 0; i < 2; ++i)
     io::write_obj(files[i]->stream(), *positions[i], mesh.triangles, comment + " (" + names[i] + ")");
   t0.commit();

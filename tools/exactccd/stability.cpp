@@ -9,7 +9,7 @@
 
 #include "cli_common.hpp"
 #include "generators/families.hpp"
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 #include "subcommands.hpp"
 
 namespace exactccd::cli {
@@ -176,7 +176,7 @@ int run_stability(int argc, char** argv) {
     throw UsageError("stability: unknown argument '" + options.positionals()[0] + "' (see exactccd stability --help)");
   if (k_max < k_min) throw UsageError("stability: need --k-min <= --k-max");
   // An unwritable --out FILE fails now, not after the whole run.
-  std::optional<AtomicOutputFile> file;
+  std::optional<io::AtomicOutputFile> file;
   if (options.has("--out")) file.emplace(options.text("--out"));
   const std::vector<const families::Family*> fams = chosen_families(options.text("--families"));
   sweep.params = separation_params(options);

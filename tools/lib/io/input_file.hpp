@@ -12,6 +12,13 @@
 namespace exactccd::io {
 
 /// An input that cannot be used: what() is "<source>: <reason>" (ParseError, which derives
+/// An error of the caller's request that the tools report and stop on (a bad option, an output
+/// path that cannot be written, files that are not the shards of one run): the programs print
+/// "exactccd: <message>" and exit 2 (tools/exactccd/cli_common.hpp, ExitCode).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 /// from it, adds the line: "<source>:<line>: <reason>").
 class InputError : public std::runtime_error {
  public:

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-namespace exactccd::cli {
+namespace exactccd::io {
 
 /// The environment variable naming the bundled data folder (after --data-dir, before the
 /// program's own location).
@@ -22,7 +22,8 @@ inline constexpr const char* kSampleDirVariable = "EXACTCCD_SAMPLE_QUERIES_DIR";
 /// set and not empty; else share/exactccd/data relative to the program's own folder (its
 /// /proc/self/exe): <bin>/../share/exactccd/data when installed, <build>/share/exactccd/data in
 /// a build tree (a link CMake makes to the checkout's data/). The first of these given is the
-/// only one tried. Throws UsageError (exit 2), its message starting with `who` ("bench"), when
+/// only one tried. Throws InputError (the program's exit 2), its message starting with `who`
+/// ("bench"), when
 /// the folder named is none, or when none was named and none is found relative to the program:
 /// the message names every place looked at, --data-dir and EXACTCCD_DATA_DIR.
 std::filesystem::path bundled_data_dir(const std::string& option, const std::string& who);
@@ -33,4 +34,4 @@ std::filesystem::path bundled_data_dir(const std::string& option, const std::str
 /// EXACTCCD_SAMPLE_QUERIES_DIR; an installation has none). nullopt: no sample.
 std::optional<std::filesystem::path> shared_sample_dir();
 
-}  // namespace exactccd::cli
+}  // namespace exactccd::io

@@ -1,11 +1,11 @@
 // The run-time lookup of the bundled data and the shared sample (data_dir.hpp).
-#include "data_dir.hpp"
+#include "io/data_dir.hpp"
 
 #include <cstdlib>
 #include <system_error>
 #include <vector>
 
-#include "cli_common.hpp"
+#include "io/input_file.hpp"
 
 // The folder share/exactccd relative to the program's folder: installed (CMakeLists.txt derives
 // it from GNUInstallDirs' bin and data folders: "../share/exactccd" by default), and in a build
@@ -18,7 +18,7 @@
 #error "EXACTCCD_BUILD_TREE_SHARE (share/exactccd beside the build tree's program) is set by CMakeLists.txt"
 #endif
 
-namespace exactccd::cli {
+namespace exactccd::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -52,23 +52,23 @@ std::string environment(const char* name) {
   return value ? value : "";
 }
 
-/// `folder` when it is a folder, else a UsageError saying that `how` (the option or the
-/// environment variable that named it) names none.
+/// `folder` when it is a folder, else an InputError (from `who`) saying that `how` (the option or
+/// the environment variable that named it) names none.
 fs::path named_folder(const std::string& folder, const std::string& how, const std::string& who) {
   if (is_folder(folder)) return folder;
-  throw UsageError(who + ": " + how + " '" + folder + "' is not a folder (the bundled data: catalogue, families, " +
-                   "kinds, rigid, scenes, sim)");
+  throw InputError(who, how + " '" + folder + "' is not a folder (the bundled data: catalogue, families, " +
+                            "kinds, rigid, scenes, sim)");
 }
 
 /// The error when no data folder was named and none is found relative to the program.
-UsageError not_found(const std::vector<fs::path>& looked, const std::string& who) {
+InputError not_found(const std::vector<fs::path>& looked, const std::string& who) {
   std::string where;
   for (const fs::path& p : looked) where += (where.empty() ? "" : " and ") + p.string();
   const std::optional<fs::path> exe = program_path();
   const std::string relative = exe ? "looked in " + where + " (relative to the program " + exe->string() + ")"
                                    : std::string("the program's own location (/proc/self/exe) is unknown");
-  return UsageError(who + ": no FILE given and the bundled data was not found: " + relative +
-                    "; name its folder with --data-dir DIR or the environment variable " + kDataDirVariable);
+  return InputError(who, "no FILE given and the bundled data was not found: " + relative +
+                              "; name its folder with --data-dir DIR or the environment variable " + kDataDirVariable);
 }
 
 }  // namespace
@@ -93,4 +93,4 @@ std::optional<fs::path> shared_sample_dir() {
   return std::nullopt;
 }
 
-}  // namespace exactccd::cli
+}  // namespace exactccd::io

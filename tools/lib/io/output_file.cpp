@@ -1,4 +1,4 @@
-#include "output_file.hpp"
+#include "io/output_file.hpp"
 
 #include <unistd.h>
 
@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <system_error>
 
-#include "cli_common.hpp"  // UsageError
+#include "io/input_file.hpp"  // UsageError
 
-namespace exactccd::cli {
+namespace exactccd::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -83,4 +83,4 @@ void prepare_output_directory(const std::string& path) {
   std::remove(probe.c_str());
 }
 
-}  // namespace exactccd::cli
+}  // namespace exactccd::io

@@ -1,4 +1,4 @@
-// Output files of the exactccd subcommands: checked for writability before the work starts,
+// Output files of the tools (the exactccd subcommands, sharded runs' partials): checked for writability before the work starts,
 // written to a temporary in the same directory and renamed into place, so that no run leaves
 // a half-written file behind. Every failure is a UsageError naming the path (exit code 2).
 #pragma once
@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-namespace exactccd::cli {
+namespace exactccd::io {
 
 /// A file written through a temporary ("<path>.tmp.<pid>.<n>") renamed over `path` by commit().
 /// Until then `path` is untouched; a file not committed (an error, an exception) leaves no
@@ -42,4 +42,4 @@ void write_file_atomically(const std::string& path, const std::string& text);
 /// "<path>: cannot create directory: <reason>" or "<path>: cannot write: <reason>".
 void prepare_output_directory(const std::string& path);
 
-}  // namespace exactccd::cli
+}  // namespace exactccd::io

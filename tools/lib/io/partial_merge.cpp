@@ -1,22 +1,20 @@
-#include "partial.hpp"
+// Writing and merging the partial results of sharded runs (partial_merge.hpp).
+#include "io/partial_merge.hpp"
 
 #include <map>
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include "cli_common.hpp"
-#include "output_file.hpp"
+#include "io/input_file.hpp"  // UsageError
+#include "io/output_file.hpp"
 
-namespace exactccd::cli {
-
-// The reader's shard limit is the --shard option's.
-static_assert(static_cast<long long>(io::kMaxPartialShards) == kMaxShards);
+namespace exactccd::io {
 
 void write_partial(const std::string& path, const Partial& p) {
-  AtomicOutputFile file(path);
+  io::AtomicOutputFile file(path);
   std::ostream& out = file.stream();
-  out << io::kPartialMagic << "\ncommand " << p.command << "\n";
+  out << kPartialMagic << "\ncommand " << p.command << "\n";
   for (const auto& [key, value] : p.settings) {
     if (key.empty() || key.find_first_of(" \n") != std::string::npos || value.find('\n') != std::string::npos)
       throw UsageError(path + ": cannot record the setting '" + key + "' (a line break in a name or path)");
@@ -81,4 +79,4 @@ Partial merge_partials(const std::vector<std::string>& paths) {
   return merged;
 }
 
-}  // namespace exactccd::cli
+}  // namespace exactccd::io
