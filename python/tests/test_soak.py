@@ -87,9 +87,14 @@ def test_short_soak():
     assert len(checks) == 6 and all(closest is not None for _, closest, _ in checks)  # near pairs were decided exactly
     assert max(r["contacts"] for r in records) > 50
     assert max(r["self_contacts"] for r in records) > 20
-    # The response was needed: the proposed motion alone would have stalled (the raw line search
-    # gives a step of about 1e-16 once the cloth rests in contact).
-    assert sum(r["first_fraction"] < STALLED for r in records) > 50
+    # The response was needed: in most steps the proposed motion alone would have been cut below
+    # MIN_FRACTION (once the cloth rests in contact the raw line search gives a step of about
+    # 1e-16). How many of those steps fall below STALLED is not a property of the loop but of
+    # its chaotic trajectory: with the hill's heights moved by one ulp (NumPy's exp differs by an
+    # ulp between its AVX-512 and AVX2 code) it was 5, 8, 119 or 140 of 150 steps, while the
+    # steps that needed the response were 141 every time.
+    assert sum(r["response_rounds"] > 0 for r in records) > 100
+    assert sum(r["first_fraction"] < STALLED for r in records) > 0
 
 
 def test_example_writes_its_record_and_frames(tmp_path):
