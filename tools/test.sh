@@ -58,7 +58,7 @@ if [ "${EXACTCCD_SKIP_FUZZERS:-0}" != "1" ]; then
         -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
         -DEXACTCCD_BUILD_FUZZERS=ON -DEXACTCCD_BUILD_TESTS=OFF -DEXACTCCD_BUILD_BENCHMARKS=OFF \
         -DEXACTCCD_WERROR=ON
-  cmake --build build-fuzz-clang -j"$jobs"
+  cmake --build build-fuzz-clang -j"$jobs" --target exactccd_fuzzers  # not the program: fuzz/fuzz.cmake
   record_pass fuzzers build-fuzz-clang -R '^fuzz\.'
   ctest --test-dir build-fuzz-clang --output-on-failure -j"$jobs" -R '^fuzz\.'
 fi
