@@ -4,7 +4,7 @@
 tools/test.sh records, for each ctest pass, the tests its build registers and those the pass
 runs (`ctest --show-only=json-v1`, without and with the pass's selection), as
 SETS_DIR/<pass>.registered.json and SETS_DIR/<pass>.ran.json. A registered test is run when
-some pass ran it by name; or, when the pip pass ran (--pip-pass), when it is a pytest run of
+some pass ran it by name (GoogleTest's parameter comment left out: it may hold addresses); or, when the pip pass ran (--pip-pass), when it is a pytest run of
 one file of the suite that pass runs whole (python/tests) with no environment beyond what that
 pass sets itself (a test with its own setting, such as EXACTCCD_SIMD, is not: the pip pass runs
 pytest without it); or when EXEMPT names it with a reason. Exits 1 listing every other one.
@@ -27,8 +27,18 @@ PIP_PASS_ENVIRONMENT = {"PYTHONPATH", "EXACTCCD_CLI", "EXACTCCD_DATA", "EXACTCCD
 EXEMPT = {}
 
 
+# GoogleTest's discovery appends "  # GetParam() = ..." to a parameterised test's name; for a
+# parameter it cannot print, that is the parameter's bytes, pointers among them, which differ
+# from one build to the next. A test is its name without that comment.
+PARAMETER_COMMENT = re.compile(r"\s+# GetParam\(\) = .*$")
+
+
+def test_name(name):
+    return PARAMETER_COMMENT.sub("", name)
+
+
 def tests_of(path):
-    return {t["name"]: t for t in json.loads(path.read_text(encoding="utf-8")).get("tests", [])}
+    return {test_name(t["name"]): t for t in json.loads(path.read_text(encoding="utf-8")).get("tests", [])}
 
 
 def environment_keys(test):
