@@ -4,10 +4,11 @@
 tools/test.sh records, for each ctest pass, the tests its build registers and those the pass
 runs (`ctest --show-only=json-v1`, without and with the pass's selection), as
 SETS_DIR/<pass>.registered.json and SETS_DIR/<pass>.ran.json. A registered test is run when
-some pass ran it by name (GoogleTest's parameter comment left out: it may hold addresses); or, when the pip pass ran (--pip-pass), when it is a pytest run of
-one file of the suite that pass runs whole (python/tests) with no environment beyond what that
-pass sets itself (a test with its own setting, such as EXACTCCD_SIMD, is not: the pip pass runs
-pytest without it); or when EXEMPT names it with a reason. Exits 1 listing every other one.
+some pass ran it by name (GoogleTest's parameter comment left out: it may hold addresses); or,
+when the pip pass ran (--pip-pass), when it is a pytest run of one file of the suite that pass
+runs whole (python/tests) with no environment beyond what that pass sets itself (a test with
+its own setting, such as EXACTCCD_SIMD, is not: the pip pass runs pytest without it); or when
+EXEMPT names it with a reason. Exits 1 listing every other one.
 
 usage: check_test_sets.py SETS_DIR [--pip-pass PYTEST_DIR]
 """
